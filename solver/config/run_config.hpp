@@ -1,0 +1,84 @@
+#pragma once
+// Typed run configuration mirroring the JSON groups of docs/contracts.md (section 1).
+// Every key has the paper's default; validation reports every violation at once.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace slidewave {
+
+enum class Integration { full, reduced, reduced_pure };
+enum class MassKind { consistent, lumped };
+enum class ContactWeighting { alpha, end };
+enum class Regularization { none, prakash_clifton };
+enum class ProgressMode { automatic, always, never };
+
+struct MaterialConfig { double E = 1000.0, nu = 0.2, rho = 1000.0; };
+struct GeometryConfig { double H = 25.0, lambda_over_H = 2.0; };
+struct MeshConfig {
+  int elements_per_H = 32;
+  Integration integration = Integration::reduced;
+  MassKind mass = MassKind::consistent;
+};
+struct LoadingConfig { double Uy_over_H = -0.001, preshear_ratio = 0.95, V0_over_cs = 1e-5; };
+struct FrictionConfig {
+  double f = 1.5;
+  Regularization regularization = Regularization::none;
+  double pc_length = 0.5;    ///< Prakash–Clifton slip length L (m)
+  double pc_velocity = 0.0;  ///< Prakash–Clifton reference velocity v* (m/s)
+};
+struct TimeConfig {
+  double dt_times_cs = 0.5;  ///< dt = dt_times_cs / c_s, a length (m), used when dt is absent
+  std::optional<double> dt;  ///< explicit step (s)
+  double t_end = 1500.0;
+  double hht_alpha = 0.1;    ///< the paper's alpha (classic HHT alpha_H = -hht_alpha)
+  ContactWeighting contact_weighting = ContactWeighting::alpha;
+  std::optional<double> stop_after_opening;
+};
+struct ContactConfig { double tolerance = 1e-10; int max_iterations = 2000; };
+struct PerturbationConfig { double amplitude = 1e-5; long long seed = 1; };
+struct OutputConfig {
+  int interface_stride = 4;
+  std::vector<double> snapshot_times;
+  ProgressMode progress = ProgressMode::automatic;
+};
+
+/// Constants that follow from the configuration, computed in one place (and written to run.h5).
+struct DerivedConstants {
+  double G, lame_lambda, c_s, c_l;
+  double H, lambda, h;
+  int n_x, n_y;         ///< elements along x (period) and y (height)
+  double p0;            ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive)
+  double V0, dt;
+  double t_onset_estimate;  ///< quasi-static time for T/N to reach f from preshear_ratio*f (s)
+};
+
+struct RunConfig {
+  MaterialConfig material;
+  GeometryConfig geometry;
+  MeshConfig mesh;
+  LoadingConfig loading;
+  FrictionConfig friction;
+  TimeConfig time;
+  ContactConfig contact;
+  PerturbationConfig perturbation;
+  OutputConfig output;
+
+  DerivedConstants derived() const;
+  nlohmann::json to_json() const;  ///< the resolved configuration, every key explicit
+};
+
+/// Thrown with every problem found, one per line ("key: value ... allowed ...").
+class ConfigError : public std::runtime_error {
+ public:
+  explicit ConfigError(const std::vector<std::string>& problems);
+  const std::vector<std::string> problems;
+};
+
+/// Parses and validates; throws ConfigError listing every invalid or unknown key.
+RunConfig parse_run_config(const nlohmann::json& input);
+RunConfig load_run_config(const std::string& path);
+
+}  // namespace slidewave

@@ -1,0 +1,21 @@
+#pragma once
+// One-line progress report on stderr: simulated time, steps/s, ETA, T/N and slipping nodes.
+// On a terminal the line is rewritten in place; otherwise (when forced with progress = always) one
+// line per report, so logs stay readable.
+#include "config/run_config.hpp"
+
+namespace slidewave {
+
+class ProgressPrinter {
+ public:
+  ProgressPrinter(ProgressMode mode, int n_contact_nodes);
+  bool enabled() const { return enabled_; }
+  void report(double t, double t_end, double steps_per_second, double T_over_N, int n_slipping, double dt) const;
+  void finish() const;
+
+ private:
+  bool enabled_, terminal_;
+  int n_contact_nodes_;
+};
+
+}  // namespace slidewave

@@ -1,0 +1,24 @@
+#pragma once
+// Sparse Cholesky factorization of a symmetric positive-definite matrix (CHOLMOD, through Eigen).
+// Factorize once, solve many times. A failed factorization is an exception (edge of the library):
+// the matrices here are SPD by construction, so failure means a modelling error.
+#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <memory>
+
+namespace slidewave {
+
+class SparseCholesky {
+ public:
+  explicit SparseCholesky(const Eigen::SparseMatrix<double>& A);
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  int size() const { return n_; }
+
+ private:
+  int n_;
+  std::unique_ptr<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower>> llt_;
+};
+
+}  // namespace slidewave

@@ -1,0 +1,90 @@
+// slidewave: one run of the periodic elastic layer sliding on a rigid flat under Coulomb friction
+// (Yastrebov 2016). Sample runs (CI executes the first two):
+//   slidewave check study/examples/paper_nu0.2_f1.5.json
+//   slidewave run study/examples/paper_nu0.2_f1.5.json -o run.h5
+//   slidewave --version
+// Exit codes: 0 success, 1 run failed (output flushed and marked incomplete), 2 invalid input.
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "config/run_config.hpp"
+#include "git_version.hpp"
+#include "io/progress.hpp"
+#include "io/run_file.hpp"
+#include "model/layer_model.hpp"
+#include "model/simulation.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+void on_signal(int) { g_stop = true; }
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace slidewave;
+
+  // 1. Parse options.
+  CLI::App app{"slidewave: elastodynamic sliding of a periodic layer on a rigid flat under Coulomb friction"};
+  app.set_version_flag("--version", std::string("slidewave ") + kVersion + " (git " + kGitCommit + ")");
+  app.require_subcommand(1);
+  std::string config_path, output_path;
+  auto* run = app.add_subcommand("run", "compute one run and write RUN.h5");
+  run->add_option("config", config_path, "run configuration (JSON)")->required();
+  run->add_option("-o,--output", output_path, "output HDF5 file")->required();
+  auto* check = app.add_subcommand("check", "validate a configuration and print it resolved");
+  check->add_option("config", config_path, "run configuration (JSON)")->required();
+  CLI11_PARSE(app, argc, argv);
+
+  // 2. Read and validate the configuration (every problem at once, exit 2, nothing written).
+  RunConfig config;
+  try {
+    config = load_run_config(config_path);
+  } catch (const ConfigError& e) {
+    std::cerr << "slidewave: " << config_path << ": " << e.what();
+    return 2;
+  }
+  if (check->parsed()) {
+    std::cout << config.to_json().dump(2) << "\n";
+    return 0;
+  }
+
+  // 3. Build the model and run the three stages.
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  std::string call;
+  for (int i = 0; i < argc; ++i) call += (i ? " " : "") + std::string(argv[i]);
+  try {
+    const LayerModel model(config);
+    const ProgressPrinter printer(config.output.progress, model.mesh.n_contact());
+    const auto progress = [&](double t, double t_end, double rate, double tn, int n_slip) {
+      printer.report(t, t_end, rate, tn, n_slip, model.d.dt);
+    };
+    const RunRecord record = simulate(model, progress, &g_stop);
+    printer.finish();
+
+    // 4. Write the output atomically, complete or not.
+    write_run_file(output_path, config, record, {call, read_file(config_path)});
+    if (!record.complete) {
+      std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
+                << ", t = " << record.n_steps_done * model.d.dt << " s; " << output_path
+                << " holds what was computed and is marked complete = 0\n";
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "slidewave: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,107 @@
+#include "model/layer_model.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "contact/delassus.hpp"
+#include "contact/gauss_seidel.hpp"
+#include "fem/assembly.hpp"
+#include "linalg/sparse_cholesky.hpp"
+
+namespace slidewave {
+
+LayerModel::LayerModel(const RunConfig& c)
+    : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
+  K = assemble_uniform(mesh, quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration));
+  M = assemble_uniform(mesh, quad4_mass(c.material.rho, d.h, c.mesh.mass));
+  n_free = mesh.n_free();
+  n_top = mesh.n_top();
+  n_contact_dofs = 2 * mesh.n_contact();
+  K_ff = K.topLeftCorner(n_free, n_free);
+  K_fd = K.topRightCorner(n_free, n_top);
+  M_ff = M.topLeftCorner(n_free, n_free);
+  K_free_rows = K.topRows(n_free);
+  K_top_rows = K.bottomRows(n_top);
+  M_top_rows = M.bottomRows(n_top);
+}
+
+Eigen::VectorXd LayerModel::top_displacement(double u_x, double u_y) const {
+  Eigen::VectorXd u_d(n_top);
+  for (int i = 0; i < mesh.n_x; ++i) {
+    u_d(2 * i) = u_x;
+    u_d(2 * i + 1) = u_y;
+  }
+  return u_d;
+}
+
+namespace {
+
+double sum_every_other(const Eigen::VectorXd& r, int offset) {
+  double s = 0;
+  for (int k = offset; k < r.size(); k += 2) s += r(k);
+  return s;
+}
+
+}  // namespace
+
+PreloadState solve_preload(const LayerModel& model) {
+  const auto& c = model.config;
+  const int n_c = model.n_contact_dofs;
+  const SparseCholesky K_static(model.K_ff);
+  const Condensation cond = condense_on_contact(K_static, n_c);
+  GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
+
+  // Quasi-static contact solve: K_ff u_f = -K_fd u_d + C^T r; local slip measured from u_x_before.
+  const auto solve_static = [&](const Eigen::VectorXd& u_d, const Eigen::VectorXd& u_contact_before,
+                                Eigen::VectorXd& r, std::vector<ContactState>& state, int& iterations) {
+    const Eigen::VectorXd u_free = K_static.solve(Eigen::VectorXd(-model.K_fd * u_d));
+    Eigen::VectorXd q = u_free.head(n_c);
+    for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
+    Eigen::VectorXd y;
+    const auto report = solve_contact_gauss_seidel(cond.W, q, c.friction.f, {}, settings, r, y, state);
+    if (!report.converged) throw std::runtime_error("preload: the quasi-static contact solve did not converge");
+    iterations += report.iterations;
+    Eigen::VectorXd u(model.n_free + model.n_top);
+    u.head(model.n_free) = u_free + cond.Z * r;
+    u.tail(model.n_top) = u_d;
+    return u;
+  };
+
+  PreloadState s;
+  s.contact_iterations = 0;
+  s.r = Eigen::VectorXd::Zero(n_c);
+  const double u_y_top = c.loading.Uy_over_H * model.d.H;
+
+  // Stage 1: compression.
+  const Eigen::VectorXd zero_contact = Eigen::VectorXd::Zero(n_c);
+  Eigen::VectorXd u1 = solve_static(model.top_displacement(0, u_y_top), zero_contact, s.r, s.state,
+                                    s.contact_iterations);
+  const Eigen::VectorXd r1 = s.r;
+  const Eigen::VectorXd u1_contact = u1.head(n_c);
+
+  // Stage 2: while all nodes stick, the reactions are linear in the top shear U:
+  // r(U) = r1 + U r_unit with W r_unit = -(free contact displacement of a unit shear). Solve for the U
+  // that gives T/N = preshear_ratio * f, then verify with the full contact law.
+  const Eigen::VectorXd q_unit = K_static.solve(Eigen::VectorXd(-model.K_fd * model.top_displacement(1, 0))).head(n_c);
+  const Eigen::VectorXd r_unit = -cond.W.ldlt().solve(q_unit);
+  const double target = c.loading.preshear_ratio * c.friction.f;
+  const double T1 = -sum_every_other(r1, 0), N1 = sum_every_other(r1, 1);
+  const double Tu = -sum_every_other(r_unit, 0), Nu = sum_every_other(r_unit, 1);
+  s.u_x_top = (target * N1 - T1) / (Tu - target * Nu);
+  s.r = r1 + s.u_x_top * r_unit;  // warm start: the exact all-stick answer
+  s.u = solve_static(model.top_displacement(s.u_x_top, u_y_top), u1_contact, s.r, s.state, s.contact_iterations);
+  s.T = -sum_every_other(s.r, 0);
+  s.N = sum_every_other(s.r, 1);
+
+  for (size_t k = 0; k < s.state.size(); ++k)
+    if (s.state[k] != ContactState::stick) {
+      std::ostringstream msg;
+      msg << "preload: contact node " << k << " is not in stick after stage 2 (state "
+          << static_cast<int>(s.state[k]) << "); the preload must leave the interface all-closed, all-stick";
+      throw std::runtime_error(msg.str());
+    }
+  return s;
+}
+
+}  // namespace slidewave

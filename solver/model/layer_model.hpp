@@ -1,0 +1,42 @@
+#pragma once
+// The discrete periodic layer: mesh, global K and M, their partitions into free DOFs (rows j < n_y,
+// numbered first) and top DOFs (row j = n_y, displacement-controlled), and the quasi-static stages.
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "config/run_config.hpp"
+#include "contact/coulomb_local.hpp"
+#include "mesh/layer_mesh.hpp"
+
+namespace slidewave {
+
+struct LayerModel {
+  explicit LayerModel(const RunConfig& config);
+
+  RunConfig config;
+  DerivedConstants d;
+  LayerMesh mesh;
+  Eigen::SparseMatrix<double> K, M;           ///< all DOFs
+  Eigen::SparseMatrix<double> K_ff, K_fd, M_ff, K_free_rows, M_top_rows, K_top_rows;
+  int n_free, n_top, n_contact_dofs;
+
+  /// Top DOF values for shear u_x and compression u_y.
+  Eigen::VectorXd top_displacement(double u_x, double u_y) const;
+};
+
+/// Result of the quasi-static stages (1: compression, 2: shear until T/N = preshear_ratio * f).
+struct PreloadState {
+  Eigen::VectorXd u;        ///< all DOFs
+  Eigen::VectorXd r;        ///< contact reactions (2 per contact node: x, y)
+  std::vector<ContactState> state;
+  double u_x_top;           ///< top shear displacement of stage 2 (m)
+  double T, N;              ///< forces per unit depth (N/m), T = -sum r_x, N = sum r_y
+  int contact_iterations;
+};
+
+/// Solves stages 1 and 2 through the same contact law as the dynamics (slip measured from the
+/// previous stage). Throws if the final state is not all-closed, all-stick.
+PreloadState solve_preload(const LayerModel& model);
+
+}  // namespace slidewave

@@ -1,0 +1,31 @@
+#pragma once
+// Stage 3 of a run: the dynamic shear of the preloaded layer, top u_x growing at V0 from zero initial
+// velocity, integrated with HHT (time/hht.hpp); exact Signorini–Coulomb contact each step on the
+// Delassus operator of K_eff (factorized once).
+//
+// Per step:  predictor  u~ = u + dt v + dt^2 (1/2 - beta) a
+//            free solve K_eff u_free = M u~ / (beta dt^2) - (1-a) K_fd u_d(n+1) - a K u(n) + a' C^T r(n)
+//            contact    y = C u_free - (u_x(n), 0) + w W r(n+1) under the local law (contact/*)
+//            correction u(n+1) = u_free + w Z r(n+1)
+// where w = 1-a, a' = a ("alpha" weighting, contact forces like F_ext) or w = 1, a' = 0 ("end").
+#include <atomic>
+#include <functional>
+
+#include "model/layer_model.hpp"
+#include "model/run_record.hpp"
+
+namespace slidewave {
+
+/// Called about once a second of wall time, with (t, t_end, steps per second, T/N, n slipping nodes).
+using ProgressCallback = std::function<void(double, double, double, double, int)>;
+
+/// Runs all three stages. Never throws for a contact step that misses tolerance: the record is then
+/// returned with complete = false and end_reason = "contact_not_converged".
+/// @param stop_requested  polled every step (signal handlers set it); ends the run as "interrupted"
+RunRecord simulate(const LayerModel& model, const ProgressCallback& progress = {},
+                   const std::atomic<bool>* stop_requested = nullptr);
+
+/// Threshold above which a contact node counts as open (m): 1e-3 of the preload displacement |Uy|.
+double opening_threshold(const RunConfig& config);
+
+}  // namespace slidewave
