@@ -112,7 +112,7 @@ void write_xdmf(const std::string& path, const std::string& h5_name, const RunRe
   out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
       << "  <Grid Name=\"layer\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (size_t s = 0; s < rec.snapshots.size(); ++s) {
-    char id[16];
+    char id[32];
     std::snprintf(id, sizeof id, "%04zu", s);
     out << "   <Grid Name=\"snapshot_" << id << "\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << rec.snapshots[s].t << "\"/>\n"
@@ -222,7 +222,7 @@ void write_run_file(const std::string& path, const RunConfig& config, const RunR
       dataset(gs, "connectivity", rec.snapshot_mesh.connectivity, rec.snapshot_mesh.connectivity.size() / 4, 4,
               "1", "quadrilateral nodes, counter-clockwise");
       for (size_t k = 0; k < rec.snapshots.size(); ++k) {
-        char id[16];
+        char id[32];
         std::snprintf(id, sizeof id, "%04zu", k);
         const hid_t one = check_id(H5Gcreate2(gs, id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), id);
         attribute_number(one, "t", rec.snapshots[k].t);

@@ -67,7 +67,27 @@ SnapshotMesh snapshot_mesh(const LayerMesh& mesh) {
 
 }  // namespace
 
-RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const std::atomic<bool>* stop_requested) {
+namespace {
+/// Adds the time since the last call to one field of the profile (no-op without a profile).
+class Stopwatch {
+ public:
+  explicit Stopwatch(StepProfile* p) : profile_(p), last_(std::chrono::steady_clock::now()) {}
+  void lap(double StepProfile::*field) {
+    if (!profile_) return;
+    const auto now = std::chrono::steady_clock::now();
+    profile_->*field += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  StepProfile* profile_;
+  std::chrono::steady_clock::time_point last_;
+};
+}  // namespace
+
+RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const std::atomic<bool>* stop_requested,
+                   StepProfile* profile) {
+  Stopwatch watch(profile);
   const auto& c = m.config;
   const auto& d = m.d;
   const int n_f = m.n_free, n_t = m.n_top, n_c = m.n_contact_dofs, n_nodes_c = n_c / 2;
@@ -164,6 +184,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   record_interface(rec, 0, m, u, u.head(n_c), u_contact_start, r, state, dt);
   maybe_snapshot(0);
 
+  watch.lap(&StepProfile::setup);
+
   // 4. Time loop.
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, d.p0 * d.h};
   const double threshold_open = opening_threshold(c);
@@ -190,7 +212,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     rhs.noalias() -= (1 - a) * (m.K_fd * u_d);
     rhs.noalias() -= a * Ku.head(n_f);
     if (w_previous != 0) rhs.head(n_c) += w_previous * r;
+    watch.lap(&StepProfile::predictor);
     const Eigen::VectorXd u_free = K_eff.solve(rhs);
+    watch.lap(&StepProfile::free_solve);
 
     // Contact: y = (du_x, u_y) at the contact nodes.
     q = u_free.head(n_c);
@@ -205,6 +229,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       break;
     }
 
+    watch.lap(&StepProfile::contact);
+    if (profile) profile->contact_sweeps += report.iterations;
+
     // Correction, Newmark update, diagnostics.
     rhs.head(n_c) += w * r_new;
     Eigen::VectorXd u_next(n_f + n_t);
@@ -214,6 +241,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     v.head(n_f) += dt * ((1 - hht.gamma) * acc.head(n_f) + hht.gamma * acc_f_next);
     acc.head(n_f) = acc_f_next;
 
+    watch.lap(&StepProfile::correction);
     const Eigen::VectorXd du_contact = u_next.head(n_c) - u.head(n_c);
     for (int k = 0; k < n_nodes_c; ++k) {
       dissipation -= 0.5 * (r(2 * k) + r_new(2 * k)) * du_contact(2 * k);
@@ -250,6 +278,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
         }
     }
 
+    watch.lap(&StepProfile::diagnostics);
+    if (profile) profile->steps = step;
     ++steps_since_report;
     if (progress) {
       const auto now = std::chrono::steady_clock::now();

@@ -13,6 +13,7 @@
 
 #include "model/layer_model.hpp"
 #include "model/run_record.hpp"
+#include "model/step_profile.hpp"
 
 namespace slidewave {
 
@@ -22,8 +23,9 @@ using ProgressCallback = std::function<void(double, double, double, double, int)
 /// Runs all three stages. Never throws for a contact step that misses tolerance: the record is then
 /// returned with complete = false and end_reason = "contact_not_converged".
 /// @param stop_requested  polled every step (signal handlers set it); ends the run as "interrupted"
+/// @param profile         if given, receives the wall-time split (bench/ only)
 RunRecord simulate(const LayerModel& model, const ProgressCallback& progress = {},
-                   const std::atomic<bool>* stop_requested = nullptr);
+                   const std::atomic<bool>* stop_requested = nullptr, StepProfile* profile = nullptr);
 
 /// Threshold above which a contact node counts as open (m): 1e-3 of the preload displacement |Uy|.
 double opening_threshold(const RunConfig& config);

@@ -1,0 +1,85 @@
+// Per-step cost of slidewave runs: split into predictor, free solve, contact, correction and
+// diagnostics, steps/s, and the ratio of one step to one CHOLMOD solve on the same factor.
+// A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2] [--t-end 1300]
+//                                      [--nu 0.2] [--f 1.5]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "linalg/sparse_cholesky.hpp"
+#include "model/layer_model.hpp"
+#include "model/simulation.hpp"
+#include "time/hht.hpp"
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Median-free simple estimate: average wall time of repeated solves with the K_eff factor.
+double one_solve_seconds(const slidewave::LayerModel& model) {
+  const slidewave::HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
+  const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * model.M_ff + (1 - hht.alpha) * model.K_ff;
+  const slidewave::SparseCholesky factor(K_eff);
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(model.n_free);
+  const int repeats = 200;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < repeats; ++i) b = factor.solve(b) + Eigen::VectorXd::Ones(model.n_free);
+  return seconds_since(start) / repeats;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> resolutions;
+  double lambda_over_H = 2, t_end = 1300, nu = 0.2, f = 1.5;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--n") {
+      while (i + 1 < argc && argv[i + 1][0] != '-') resolutions.push_back(std::atoi(argv[++i]));
+    } else if (a == "--lambda" && i + 1 < argc) {
+      lambda_over_H = std::atof(argv[++i]);
+    } else if (a == "--t-end" && i + 1 < argc) {
+      t_end = std::atof(argv[++i]);
+    } else if (a == "--nu" && i + 1 < argc) {
+      nu = std::atof(argv[++i]);
+    } else if (a == "--f" && i + 1 < argc) {
+      f = std::atof(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F]\n", argv[0]);
+      return 2;
+    }
+  }
+  if (resolutions.empty()) resolutions = {32, 64, 128};
+
+  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), one core\n", nu, f, lambda_over_H, t_end);
+  std::printf("%6s %8s %9s | %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s\n", "H/h", "n_dofs", "steps", "predict",
+              "free_slv", "contact", "correct", "diagnost", "ms/step", "steps/s", "1solve_ms", "step/slv",
+              "setup_s");
+  for (int n : resolutions) {
+    slidewave::RunConfig config;
+    config.mesh.elements_per_H = n;
+    config.geometry.lambda_over_H = lambda_over_H;
+    config.material.nu = nu;
+    config.friction.f = f;
+    config.time.t_end = t_end;
+    const slidewave::LayerModel model(config);
+    slidewave::StepProfile profile;
+    const auto start = std::chrono::steady_clock::now();
+    slidewave::simulate(model, {}, nullptr, &profile);
+    const double total = seconds_since(start);
+    const double per_step = (total - profile.setup) / profile.steps;
+    const double solve = one_solve_seconds(model);
+    const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
+    std::printf("%6d %8d %9d | %9.3f %9.3f %9.3f %9.3f %9.3f | %9.3f %9.0f %9.3f %8.2f %8.2f\n", n,
+                model.mesh.n_dofs(), profile.steps, ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
+                ms(profile.correction), ms(profile.diagnostics), 1e3 * per_step, 1 / per_step, 1e3 * solve,
+                per_step / solve, profile.setup);
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -1,0 +1,16 @@
+#pragma once
+// Wall-time split of a run (seconds), filled by simulate() when asked; used by bench/, never by tests.
+namespace slidewave {
+
+struct StepProfile {
+  double setup = 0;        ///< preload stages, K_eff factorization, Delassus operator
+  double predictor = 0;    ///< right-hand side of the free solve
+  double free_solve = 0;   ///< K_eff u_free = rhs
+  double contact = 0;      ///< Gauss–Seidel on W
+  double correction = 0;   ///< u(n+1) from the contact forces, Newmark update
+  double diagnostics = 0;  ///< energies, forces, output rows
+  int steps = 0;
+  long long contact_sweeps = 0;
+};
+
+}  // namespace slidewave
