@@ -18,6 +18,12 @@
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 
+// Thread counts of the BLAS and OpenMP under CHOLMOD, set when those libraries are linked (weak symbols:
+// absent libraries are fine). One thread by default: a study runs one process per core, and fixed
+// thread counts keep the results bit-identical from run to run.
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+extern "C" void omp_set_num_threads(int) __attribute__((weak));
+
 namespace {
 
 std::atomic<bool> g_stop{false};
@@ -43,6 +49,8 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "compute one run and write RUN.h5");
   run->add_option("config", config_path, "run configuration (JSON)")->required();
   run->add_option("-o,--output", output_path, "output HDF5 file")->required();
+  int threads = 1;
+  run->add_option("--threads", threads, "threads of the BLAS/OpenMP under CHOLMOD")->check(CLI::Range(1, 256));
   auto* check = app.add_subcommand("check", "validate a configuration and print it resolved");
   check->add_option("config", config_path, "run configuration (JSON)")->required();
   CLI11_PARSE(app, argc, argv);
@@ -61,6 +69,8 @@ int main(int argc, char** argv) {
   }
 
   // 3. Build the model and run the three stages.
+  if (openblas_set_num_threads) openblas_set_num_threads(threads);
+  if (omp_set_num_threads) omp_set_num_threads(threads);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   std::string call;

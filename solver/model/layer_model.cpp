@@ -19,10 +19,9 @@ LayerModel::LayerModel(const RunConfig& c)
   n_top = mesh.n_top();
   n_contact_dofs = 2 * mesh.n_contact();
   K_ff = K.topLeftCorner(n_free, n_free);
-  K_fd = K.topRightCorner(n_free, n_top);
   M_ff = M.topLeftCorner(n_free, n_free);
-  K_free_rows = K.topRows(n_free);
-  K_top_rows = K.bottomRows(n_top);
+  M_ff_rows = M_ff;
+  K_fd = K.topRightCorner(n_free, n_top);
   M_top_rows = M.bottomRows(n_top);
 }
 

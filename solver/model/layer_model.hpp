@@ -11,14 +11,18 @@
 
 namespace slidewave {
 
+/// Row-major storage: the matrices that are only multiplied with vectors (faster, no scatter).
+using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
 struct LayerModel {
   explicit LayerModel(const RunConfig& config);
 
   RunConfig config;
   DerivedConstants d;
   LayerMesh mesh;
-  Eigen::SparseMatrix<double> K, M;           ///< all DOFs
-  Eigen::SparseMatrix<double> K_ff, K_fd, M_ff, K_free_rows, M_top_rows, K_top_rows;
+  RowSparseMatrix K, M;                    ///< all DOFs
+  Eigen::SparseMatrix<double> K_ff, M_ff;  ///< free-free blocks (to factorize)
+  RowSparseMatrix M_ff_rows, K_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
 
   /// Top DOF values for shear u_x and compression u_y.

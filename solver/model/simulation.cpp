@@ -208,7 +208,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
     // Predictor and free solve.
     u_tilde = u.head(n_f) + dt * v.head(n_f) + dt * dt * (0.5 - hht.beta) * acc.head(n_f);
-    rhs.noalias() = hht.mass_factor() * (m.M_ff * u_tilde);
+    rhs.noalias() = hht.mass_factor() * (m.M_ff_rows * u_tilde);
     rhs.noalias() -= (1 - a) * (m.K_fd * u_d);
     rhs.noalias() -= a * Ku.head(n_f);
     if (w_previous != 0) rhs.head(n_c) += w_previous * r;

@@ -1,0 +1,307 @@
+#include "linalg/block_circulant_solver.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <complex>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+namespace slidewave {
+
+namespace {
+
+constexpr double kRelativeTolerance = 1e-12;
+constexpr double kPi = 3.14159265358979323846;
+
+/// The three blocks of slice 0 as dense s x s matrices: B[0] = B_{-1}, B[1] = B_0, B[2] = B_{+1}.
+struct Blocks {
+  Eigen::MatrixXd B[3];
+  int bandwidth = 0;
+};
+
+/// Empty if A is block-circulant, symmetric and nearest-neighbour (blocks written to *out), else the
+/// first mismatch. Entries are compared to kRelativeTolerance * max |A_ij|; a structural zero in one
+/// slice counts as 0 against the other slices. A is column-major: the columns of slice i_c are visited
+/// slice by slice, so an entry of slice 0 that a later slice lacks is caught by a visit stamp.
+std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, Blocks* out) {
+  std::ostringstream why;
+  if (n_x < 3 || n_y < 1) {
+    why << "need n_x >= 3 and n_y >= 1 (got n_x = " << n_x << ", n_y = " << n_y << ")";
+    return why.str();
+  }
+  const long long n = 2LL * n_x * n_y;
+  if (A.rows() != n || A.cols() != n) {
+    why << "A is " << A.rows() << " x " << A.cols() << ", expected " << n << " x " << n << " (2 n_x n_y)";
+    return why.str();
+  }
+  const int s = 2 * n_y;
+  double scale = 0;
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) scale = std::max(scale, std::fabs(it.value()));
+  if (!(scale > 0) || !std::isfinite(scale)) return "A is zero or not finite";
+  const double tol = kRelativeTolerance * scale;
+
+  // DOF -> (slice i, local r = 2 j + d), and the column of slice i, local c.
+  const auto slice_of = [n_x](int dof) { return (dof / 2) % n_x; };
+  const auto local_of = [n_x](int dof) { return 2 * ((dof / 2) / n_x) + dof % 2; };
+  const auto column = [n_x](int i, int c) { return 2 * ((c / 2) * n_x + i) + c % 2; };
+
+  Blocks blocks;
+  for (auto& B : blocks.B) B = Eigen::MatrixXd::Zero(s, s);
+  // Row slice i_r of an entry in column slice i_c: offset o = i_c - i_r in {-1, 0, +1} selects B_o.
+  const auto block_index = [n_x](int i_r, int i_c) {
+    const int o = ((i_c - i_r) % n_x + n_x) % n_x;
+    return o == 0 ? 1 : o == 1 ? 2 : o == n_x - 1 ? 0 : -1;
+  };
+  for (int c = 0; c < s; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, column(0, c)); it; ++it) {
+      const int b = block_index(slice_of(it.index()), 0);
+      if (b < 0) {
+        if (std::fabs(it.value()) > tol) {
+          why << "A(" << it.index() << ", " << column(0, c) << ") couples slices 0 and " << slice_of(it.index())
+              << ", which are not neighbours";
+          return why.str();
+        }
+        continue;
+      }
+      blocks.B[b](local_of(it.index()), c) += it.value();
+    }
+
+  // Significant entries of the reference blocks, to find the ones another slice lacks.
+  struct Position { int b, r, c; };
+  std::vector<Position> significant;
+  for (int b = 0; b < 3; ++b)
+    for (int c = 0; c < s; ++c)
+      for (int r = 0; r < s; ++r)
+        if (std::fabs(blocks.B[b](r, c)) > tol) significant.push_back({b, r, c});
+  std::vector<int> stamp(3 * static_cast<std::size_t>(s) * s, -1);
+  const auto at = [s](int b, int r, int c) { return (static_cast<std::size_t>(b) * s + c) * s + r; };
+  for (int i = 1; i < n_x; ++i) {
+    for (int c = 0; c < s; ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, column(i, c)); it; ++it) {
+        const int i_r = slice_of(it.index()), r = local_of(it.index());
+        const int b = block_index(i_r, i);
+        const double reference = b < 0 ? 0.0 : blocks.B[b](r, c);
+        if (std::fabs(it.value() - reference) > tol) {
+          why << "A(" << it.index() << ", " << column(i, c) << ") = " << it.value() << " differs from "
+              << reference << ", its counterpart in slice 0 (column slice " << i << ", row slice " << i_r << ")";
+          return why.str();
+        }
+        if (b >= 0) stamp[at(b, r, c)] = i;
+      }
+    for (const Position& q : significant)
+      if (stamp[at(q.b, q.r, q.c)] != i) {
+        why << "column slice " << i << " lacks the entry (" << q.r << ", " << q.c << ") of block B_"
+            << q.b - 1 << " = " << blocks.B[q.b](q.r, q.c) << " of slice 0";
+        return why.str();
+      }
+  }
+
+  // Symmetry: B_0 = B_0^T and B_{-1} = B_{+1}^T make A(theta) Hermitian.
+  for (int c = 0; c < s; ++c)
+    for (int r = 0; r < s; ++r) {
+      if (std::fabs(blocks.B[1](r, c) - blocks.B[1](c, r)) > tol) {
+        why << "A is not symmetric: B_0(" << r << ", " << c << ") != B_0(" << c << ", " << r << ")";
+        return why.str();
+      }
+      if (std::fabs(blocks.B[0](r, c) - blocks.B[2](c, r)) > tol) {
+        why << "A is not symmetric: B_{-1}(" << r << ", " << c << ") != B_{+1}(" << c << ", " << r << ")";
+        return why.str();
+      }
+    }
+
+  int p = 0;
+  for (const Position& q : significant) p = std::max(p, std::abs(q.r - q.c));
+  blocks.bandwidth = p;
+  if (out) *out = std::move(blocks);
+  return {};
+}
+
+/// The FFTW planner is not thread-safe (FFTW manual, sec. 5.2); execution of distinct plans is.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+struct BlockCirculantSolver::FftPlans {
+  fftw_plan forward = nullptr, inverse = nullptr;
+  ~FftPlans() {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    if (forward) fftw_destroy_plan(forward);
+    if (inverse) fftw_destroy_plan(inverse);
+  }
+};
+
+bool BlockCirculantSolver::is_block_circulant(const Eigen::SparseMatrix<double>& A, int n_x, int n_y,
+                                              std::string* reason) {
+  const std::string why = find_mismatch(A, n_x, n_y, nullptr);
+  if (reason) *reason = why;
+  return why.empty();
+}
+
+BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y)
+    : n_x_(n_x), n_y_(n_y), s_(2 * n_y), p_(0), n_modes_(n_x / 2 + 1), lanes_((n_x / 2 + 2) / 2 * 2) {
+  // 1. Structure and the blocks of slice 0.
+  Blocks blocks;
+  const std::string why = find_mismatch(A, n_x, n_y, &blocks);
+  if (!why.empty()) throw std::invalid_argument("BlockCirculantSolver: " + why);
+  p_ = std::max(blocks.bandwidth, 1);  // p = 0 (diagonal blocks) runs through the same code
+  const int s = s_, p = p_, lanes = lanes_;
+
+  // 2. L D L^H of A(theta_m) for every m, band by band (row-oriented, Golub & Van Loan alg. 4.3.5
+  //    transcribed to Hermitian matrices), then stored m-fastest for the vectorized sweeps.
+  L_re_.assign(static_cast<std::size_t>(s + p) * p * lanes, 0.0);
+  L_im_.assign(L_re_.size(), 0.0);
+  inv_D_.assign(static_cast<std::size_t>(s) * lanes, 0.0);
+  using Complex = std::complex<double>;
+  std::vector<Complex> band(static_cast<std::size_t>(s) * (p + 1));  // band[r (p+1) + k] = A(r, r-k), then L
+  std::vector<double> D(s);
+  for (int m = 0; m < n_modes_; ++m) {
+    // e^{i theta} exactly real at m = 0 and at the Nyquist mode, so that their imaginary parts vanish.
+    const Complex phase = m == 0 ? Complex(1, 0)
+                          : 2 * m == n_x ? Complex(-1, 0)
+                                         : std::polar(1.0, 2 * kPi * m / n_x);
+    for (int r = 0; r < s; ++r)
+      for (int k = 0; k <= p; ++k) {
+        const int c = r - k;
+        band[r * (p + 1) + k] =
+            c < 0 ? Complex(0) : blocks.B[1](r, c) + blocks.B[2](r, c) * phase + blocks.B[0](r, c) * std::conj(phase);
+      }
+    for (int r = 0; r < s; ++r) {
+      const int first = std::max(0, r - p);
+      for (int c = first; c < r; ++c) {
+        Complex v = band[r * (p + 1) + (r - c)];
+        for (int q = first; q < c; ++q) v -= band[r * (p + 1) + (r - q)] * D[q] * std::conj(band[c * (p + 1) + (c - q)]);
+        band[r * (p + 1) + (r - c)] = v / D[c];
+      }
+      double d = band[r * (p + 1)].real();
+      for (int q = first; q < r; ++q) d -= std::norm(band[r * (p + 1) + (r - q)]) * D[q];
+      if (!(d > 0) || !std::isfinite(d)) {
+        std::ostringstream msg;
+        msg << "BlockCirculantSolver: A(theta) is not positive definite at wavenumber m = " << m << " (pivot "
+            << r << " = " << d << "): the matrix is not SPD";
+        throw std::runtime_error(msg.str());
+      }
+      D[r] = d;
+      inv_D_[static_cast<std::size_t>(r) * lanes + m] = 1.0 / (n_x * d);
+      for (int k = 1; k <= p && k <= r; ++k) {
+        const std::size_t at = (static_cast<std::size_t>(r) * p + k - 1) * lanes + m;
+        L_re_[at] = band[r * (p + 1) + k].real();
+        L_im_[at] = band[r * (p + 1) + k].imag();
+      }
+    }
+  }
+
+  // 3. Workspace and FFT plans. The transform runs along i (stride 2 in the DOF numbering) for each
+  //    (j, d); the spectrum is written split (real, imaginary) with m fastest, row r = 2 j + d.
+  work_re_.assign(static_cast<std::size_t>(s + 2 * p) * lanes, 0.0);
+  work_im_.assign(work_re_.size(), 0.0);
+  double* spectrum_re = work_re_.data() + static_cast<std::size_t>(p) * lanes;
+  double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p) * lanes;
+  plans_ = std::make_unique<FftPlans>();
+  std::vector<double> data(static_cast<std::size_t>(size()), 0.0);
+  // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED.
+  const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    const fftw_iodim forward_dim{n_x, 2, 1};
+    const fftw_iodim forward_loops[2] = {{n_y, 2 * n_x, 2 * lanes}, {2, 1, lanes}};
+    plans_->forward = fftw_plan_guru_split_dft_r2c(1, &forward_dim, 2, forward_loops, data.data(), spectrum_re,
+                                                   spectrum_im, flags);
+    const fftw_iodim inverse_dim{n_x, 1, 2};
+    const fftw_iodim inverse_loops[2] = {{n_y, 2 * lanes, 2 * n_x}, {2, lanes, 1}};
+    plans_->inverse = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 2, inverse_loops, spectrum_re, spectrum_im,
+                                                   data.data(), flags);
+  }
+  if (!plans_->forward || !plans_->inverse) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+}
+
+BlockCirculantSolver::~BlockCirculantSolver() = default;
+BlockCirculantSolver::BlockCirculantSolver(BlockCirculantSolver&&) noexcept = default;
+BlockCirculantSolver& BlockCirculantSolver::operator=(BlockCirculantSolver&&) noexcept = default;
+
+std::size_t BlockCirculantSolver::memory_bytes() const {
+  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size());
+}
+
+namespace {
+
+/// Forward sweep L y = f (unit L) for all lanes m, then x = D^{-1} y - L^H x backward, in place on the
+/// spectrum. Rows are offset by p in y (zero rows on either side). P is the half-bandwidth when it is a
+/// compile-time constant (the loops over k unroll and the loop over m vectorizes), 0 for the general case.
+template <int P>
+void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_re, const double* __restrict L_im,
+                   const double* __restrict inv_D, double* __restrict y_re, double* __restrict y_im) {
+  const int p = P > 0 ? P : p_runtime;
+  for (int r = 0; r < s; ++r) {
+    double* __restrict out_re = y_re + static_cast<std::size_t>(r + p) * lanes;
+    double* __restrict out_im = y_im + static_cast<std::size_t>(r + p) * lanes;
+    const double* l_re = L_re + static_cast<std::size_t>(r) * p * lanes;
+    const double* l_im = L_im + static_cast<std::size_t>(r) * p * lanes;
+    for (int m = 0; m < lanes; ++m) {
+      double a_re = out_re[m], a_im = out_im[m];
+      for (int k = 1; k <= p; ++k) {
+        const double lr = l_re[(k - 1) * lanes + m], li = l_im[(k - 1) * lanes + m];
+        const double br = out_re[m - k * lanes], bi = out_im[m - k * lanes];
+        a_re -= lr * br - li * bi;
+        a_im -= lr * bi + li * br;
+      }
+      out_re[m] = a_re;
+      out_im[m] = a_im;
+    }
+  }
+  for (int r = s - 1; r >= 0; --r) {
+    double* __restrict out_re = y_re + static_cast<std::size_t>(r + p) * lanes;
+    double* __restrict out_im = y_im + static_cast<std::size_t>(r + p) * lanes;
+    const double* d = inv_D + static_cast<std::size_t>(r) * lanes;
+    for (int m = 0; m < lanes; ++m) {
+      double a_re = out_re[m] * d[m], a_im = out_im[m] * d[m];
+      for (int k = 1; k <= p; ++k) {  // x_r -= conj(L(r+k, r)) x_{r+k}
+        const std::size_t at = (static_cast<std::size_t>(r + k) * p + k - 1) * lanes + m;
+        const double lr = L_re[at], li = L_im[at];
+        const double xr = out_re[m + k * lanes], xi = out_im[m + k * lanes];
+        a_re -= lr * xr + li * xi;
+        a_im -= lr * xi - li * xr;
+      }
+      out_re[m] = a_re;
+      out_im[m] = a_im;
+    }
+  }
+}
+
+}  // namespace
+
+void BlockCirculantSolver::solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const {
+  assert(b.size() == size() && x.size() == size());
+  double* spectrum_re = work_re_.data() + static_cast<std::size_t>(p_) * lanes_;
+  double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p_) * lanes_;
+  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
+  fftw_execute_split_dft_r2c(plans_->forward, const_cast<double*>(b.data()), spectrum_re, spectrum_im);
+  if (p_ == 3)
+    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
+  else
+    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
+  fftw_execute_split_dft_c2r(plans_->inverse, spectrum_re, spectrum_im, x.data());
+}
+
+Eigen::VectorXd BlockCirculantSolver::solve(const Eigen::VectorXd& b) const {
+  if (b.size() != size()) throw std::invalid_argument("BlockCirculantSolver::solve: wrong right-hand side size");
+  Eigen::VectorXd x(size());
+  solve_into(b, x);
+  return x;
+}
+
+Eigen::MatrixXd BlockCirculantSolver::solve(const Eigen::MatrixXd& B) const {
+  if (B.rows() != size()) throw std::invalid_argument("BlockCirculantSolver::solve: wrong right-hand side size");
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  for (Eigen::Index k = 0; k < B.cols(); ++k) solve_into(B.col(k), X.col(k));
+  return X;
+}
+
+}  // namespace slidewave

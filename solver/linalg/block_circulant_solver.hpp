@@ -1,0 +1,90 @@
+#pragma once
+// Direct solver for a symmetric positive-definite matrix that is block-circulant with nearest-neighbour
+// coupling: the effective matrix K_eff = M_ff / (beta dt^2) + (1 - a) K_ff (or K_ff, M_ff alone) of the
+// uniform periodic layer (mesh/layer_mesh.hpp).
+//
+// Slice i (mesh column i, periodic in i in [0, n_x)) holds the s = 2 n_y free DOFs 2 (j n_x + i) + d,
+// ordered locally as r = 2 j + d. The matrix acts as
+//     (A x)_i = B_{-1} x_{i-1} + B_0 x_i + B_{+1} x_{i+1},   indices mod n_x,   B_{-1} = B_{+1}^T.
+// The DFT in i, X_m = sum_i x_i e^{-i theta_m i}, theta_m = 2 pi m / n_x, block-diagonalizes it
+// (Golub & Van Loan, Matrix Computations, 4th ed., sec. 4.8):
+//     A(theta_m) X_m = F_m,   A(theta) = B_0 + B_{+1} e^{i theta} + B_{-1} e^{-i theta},
+// n_x independent Hermitian positive-definite systems with the half-bandwidth p of the blocks (p = 3 for
+// Q4). Real data need m = 0..n_x/2 only (X_{n_x-m} = conj X_m). Each A(theta_m) is factorized once as
+// L D L^H (L unit lower banded, D real positive; no pivoting is needed for HPD matrices, ibid. sec. 4.3).
+// A solve is: real-to-complex FFT along i of all s rows (FFTW), forward and backward banded substitution
+// for every m (vectorized across m), complex-to-real FFT. Cost O(n log n_x + n p), memory O(n p).
+//
+// When not to use: a mesh that is not uniform in x, a matrix with couplings beyond the neighbouring
+// column, non-periodic sides, or a matrix that is not SPD. Then use SparseCholesky (the general path and
+// the oracle in the tests). Slices must agree to 1e-12 relative (the check in the constructor); the
+// blocks of slice 0 are the ones factorized.
+//
+// Thread safety: solve() writes a mutable workspace, so one object must not be used by two threads at
+// once (give each thread its own copy of the object's inputs and build one solver per thread).
+// Construction (FFTW planning) is serialized internally and may run in any thread.
+//
+// Reproducibility: the FFTs are planned with FFTW_ESTIMATE, so the plan, and hence the round-off, does
+// not depend on timing; it may depend on the SIMD extensions of the CPU that runs the program.
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace slidewave {
+
+class BlockCirculantSolver {
+ public:
+  /// Checks the structure (std::invalid_argument with the first mismatch if A is not square of size
+  /// 2 n_x n_y, symmetric and block-circulant with nearest-neighbour coupling; n_x >= 3, n_y >= 1) and
+  /// factorizes A(theta_m), m = 0..n_x/2 (std::runtime_error if one is not positive definite).
+  /// @param A full symmetric storage (both triangles), DOF 2 (j n_x + i) + d
+  BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y);
+  ~BlockCirculantSolver();
+  BlockCirculantSolver(BlockCirculantSolver&&) noexcept;
+  BlockCirculantSolver& operator=(BlockCirculantSolver&&) noexcept;
+  BlockCirculantSolver(const BlockCirculantSolver&) = delete;
+  BlockCirculantSolver& operator=(const BlockCirculantSolver&) = delete;
+
+  /// x = A^{-1} b.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// X = A^{-1} B, column by column through the same workspace (no allocation per column).
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  /// x = A^{-1} b without allocating; b and x may be the same vector. Both have size() entries.
+  void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const;
+
+  int size() const { return 2 * n_x_ * n_y_; }
+  int n_x() const { return n_x_; }
+  int n_y() const { return n_y_; }
+  /// Half-bandwidth p of the blocks in the slice ordering r = 2 j + d.
+  int bandwidth() const { return p_; }
+  /// Bytes held by the factors, the workspace and the FFT plans' arrays (not the plans themselves).
+  std::size_t memory_bytes() const;
+
+  /// True if A has the structure the constructor requires (see there); otherwise false, and the first
+  /// mismatch found is written to *reason when reason is not null.
+  static bool is_block_circulant(const Eigen::SparseMatrix<double>& A, int n_x, int n_y,
+                                 std::string* reason = nullptr);
+
+ private:
+  struct FftPlans;  // FFTW plans, kept out of this header
+
+  int n_x_, n_y_;
+  int s_;        ///< slice size 2 n_y
+  int p_;        ///< half-bandwidth of the blocks
+  int n_modes_;  ///< n_x / 2 + 1 wavenumbers
+  int lanes_;    ///< n_modes_ padded to an even count (vector lanes across m)
+
+  // Factors, structure of arrays with m fastest: L(r, r-k) at ((r p + k - 1) lanes + m), real and
+  // imaginary parts apart; rows s..s+p-1 are zero so that the backward sweep needs no bounds test.
+  // inv_D(r) at (r lanes + m) holds 1 / (n_x D_r): the 1/n_x of the inverse DFT is folded in.
+  std::vector<double> L_re_, L_im_, inv_D_;
+  // Spectrum of the right-hand side, (s + 2p) rows of lanes_ entries; the data occupy rows p..p+s-1
+  // and the p zero rows on either side stand in for the missing band entries at the ends.
+  mutable std::vector<double> work_re_, work_im_;
+  std::unique_ptr<FftPlans> plans_;
+};
+
+}  // namespace slidewave
