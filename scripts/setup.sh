@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake git pkg-config
-  libeigen3-dev libsuitesparse-dev libopenblas-dev libhdf5-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libfftw3-dev libhdf5-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pytest python3-jsonschema
   python3-pandas python3-yaml snakemake

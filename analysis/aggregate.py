@@ -1,0 +1,294 @@
+"""Many metrics files -> the regenerated Table 1 beside the published one, and a table of all metrics.
+
+Outputs (all written together or not at all):
+
+- ``table1.csv``: one row per published cell, columns ``TABLE1_COLUMNS``. celerity and everything
+  derived from it are empty when no metrics file is given for the cell or its celerity is undefined.
+  deviation_rel = (celerity - published) / |published|; within_tol = |deviation_rel| <= tolerance;
+  sign_match, regime_match compare with the published celerity and its regime (from c_s, c_l of
+  Table 1's material).
+- ``table1.md``, ``table1.tex`` (booktabs tabular in the paper's layout: f rows, nu columns; for
+  each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
+- ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
+  regime_matches, median_abs_deviation, max_abs_deviation, tolerance, missing_cells.
+- ``all_metrics.csv``: one row per metrics file, every scalar key.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from pathlib import Path
+from typing import Any, Iterable
+
+from analysis import theory
+from analysis.errors import InputError
+from analysis.reference import ReferenceCell, cell_key
+
+TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
+                  "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
+                  "min_T_over_N")
+DEFAULT_TOLERANCE = 0.05
+
+
+# --------------------------------------------------------------------------------------------------
+# Inputs
+
+
+def _number(value: Any) -> float:
+    """A metrics value as float; None -> nan."""
+    if value is None:
+        return math.nan
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise TypeError(value)
+    return float(value)
+
+
+def load_metrics(path: str | Path) -> dict[str, Any]:
+    """One metrics.json; InputError unless it is a JSON object with numeric nu, f and a celerity key
+    (number or null)."""
+    try:
+        with open(path) as stream:
+            metrics = json.load(stream)
+    except OSError as err:
+        raise InputError(f"{path}: cannot read metrics ({err.strerror})") from None
+    except json.JSONDecodeError as err:
+        raise InputError(f"{path}: not valid JSON ({err})") from None
+    if not isinstance(metrics, dict):
+        raise InputError(f"{path}: metrics must be a JSON object")
+    missing = [key for key in ("nu", "f", "celerity") if key not in metrics]
+    if missing:
+        raise InputError(f"{path}: metrics lack key(s) {', '.join(missing)}")
+    try:
+        nu, f = _number(metrics["nu"]), _number(metrics["f"])
+        _number(metrics["celerity"])
+    except TypeError as err:
+        raise InputError(f"{path}: nu, f and celerity must be numbers (celerity may be null), "
+                         f"got {err.args[0]!r}") from None
+    if not (math.isfinite(nu) and math.isfinite(f)):
+        raise InputError(f"{path}: nu and f must be finite")
+    metrics.setdefault("metrics_file", str(path))
+    return metrics
+
+
+def parse_selection(conditions: Iterable[str]) -> list[tuple[str, str]]:
+    """'key=value' strings -> pairs; InputError for a malformed one."""
+    pairs = []
+    for condition in conditions:
+        key, sep, value = condition.partition("=")
+        if not sep or not key.strip():
+            raise InputError(f"--select expects key=value, got '{condition}'")
+        pairs.append((key.strip(), value.strip()))
+    return pairs
+
+
+def _matches(value: Any, wanted: str) -> bool:
+    if isinstance(value, bool):
+        return str(value).lower() == wanted.lower()
+    if isinstance(value, (int, float)):
+        try:
+            return math.isclose(float(value), float(wanted), rel_tol=1e-9, abs_tol=1e-12)
+        except ValueError:
+            return False
+    return str(value) == wanted
+
+
+def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> list[dict[str, Any]]:
+    """Metrics whose every `key` equals `value` (numbers compared as numbers)."""
+    return [m for m in metrics if all(k in m and _matches(m[k], w) for k, w in conditions)]
+
+
+# --------------------------------------------------------------------------------------------------
+# Table 1
+
+
+def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
+                tolerance: float = DEFAULT_TOLERANCE) -> list[dict[str, Any]]:
+    """One row per published cell (reference order), values as Python objects (None = empty).
+
+    InputError when two metrics files fall on the same published cell (select one with --select).
+    """
+    by_cell: dict[tuple[float, float], dict[str, Any]] = {}
+    for m in metrics:
+        key = cell_key(m["nu"], m["f"])
+        if key in by_cell:
+            raise InputError(f"two metrics for the cell nu={key[0]:g} f={key[1]:g}: "
+                             f"{by_cell[key].get('metrics_file')} and {m.get('metrics_file')}; "
+                             "pass one per cell or narrow them with --select key=value")
+        by_cell[key] = m
+    rows = []
+    for cell in reference:
+        m = by_cell.get(cell.key)
+        row: dict[str, Any] = {column: None for column in TABLE1_COLUMNS}
+        row.update(nu=cell.nu, f=cell.f, published=cell.celerity, published_regime=cell.regime)
+        if m is not None:
+            row.update(category=m.get("category"), opening=m.get("opening"),
+                       inversion=m.get("inversion"), min_T_over_N=m.get("min_T_over_N"),
+                       regime=m.get("regime"))
+            c = _number(m["celerity"])
+            if math.isfinite(c):
+                deviation = (c - cell.celerity) / abs(cell.celerity)
+                row.update(celerity=c, deviation_rel=deviation,
+                           sign_match=(c > 0) == (cell.celerity > 0),
+                           regime_match=m.get("regime") == cell.regime,
+                           within_tol=abs(deviation) <= tolerance)
+        rows.append(row)
+    return rows
+
+
+def summarize(rows: list[dict[str, Any]], tolerance: float) -> dict[str, Any]:
+    """The summary of table1_rows (see the module docstring)."""
+    compared = [r for r in rows if r["celerity"] is not None]
+    deviations = sorted(abs(r["deviation_rel"]) for r in compared)
+    median = (math.nan if not deviations else
+              0.5 * (deviations[(len(deviations) - 1) // 2] + deviations[len(deviations) // 2]))
+    return {
+        "cells_total": len(rows),
+        "cells_compared": len(compared),
+        "cells_missing": len(rows) - len(compared),
+        "within_tolerance": sum(bool(r["within_tol"]) for r in compared),
+        "sign_matches": sum(bool(r["sign_match"]) for r in compared),
+        "regime_matches": sum(bool(r["regime_match"]) for r in compared),
+        "median_abs_deviation": median if deviations else None,
+        "max_abs_deviation": deviations[-1] if deviations else None,
+        "tolerance": tolerance,
+        "missing_cells": [f"nu={r['nu']:g} f={r['f']:g}" for r in rows if r["celerity"] is None],
+    }
+
+
+def summary_line(summary: dict[str, Any]) -> str:
+    """One line for the terminal and the log."""
+    n = summary["cells_compared"]
+    median = summary["median_abs_deviation"]
+    return (f"table1: {n}/{summary['cells_total']} cells measured, {summary['within_tolerance']}/{n} "
+            f"within {100 * summary['tolerance']:g}%, signs {summary['sign_matches']}/{n}, "
+            f"regimes {summary['regime_matches']}/{n}, median |deviation| "
+            + ("n/a" if median is None else f"{100 * median:.1f}%"))
+
+
+# --------------------------------------------------------------------------------------------------
+# Formatting
+
+
+def _cell(value: Any, fmt: str = ".6g") -> str:
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return "" if not math.isfinite(value) else format(value, fmt)
+    return str(value)
+
+
+def _csv(columns: list[str] | tuple[str, ...], rows: list[dict[str, Any]], fmt: str = ".6g") -> str:
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(columns)
+    for row in rows:
+        writer.writerow([_cell(row.get(c), fmt) for c in columns])
+    return out.getvalue()
+
+
+def table1_csv(rows: list[dict[str, Any]]) -> str:
+    return _csv(TABLE1_COLUMNS, rows)
+
+
+def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
+    header = ["nu", "f", "published (m/s)", "regenerated (m/s)", "deviation", "regime (pub.)",
+              "regime", "category", "min T/N"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for r in rows:
+        c = r["celerity"]
+        lines.append("| " + " | ".join([
+            f"{r['nu']:g}", f"{r['f']:.2f}", f"{r['published']:.3f}",
+            "missing" if c is None else f"{c:.3f}",
+            "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
+            r["published_regime"] or "", r["regime"] or "", r["category"] or "",
+            _cell(r["min_T_over_N"], ".3f")]) + " |")
+    return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
+
+
+def table1_latex(rows: list[dict[str, Any]]) -> str:
+    """Booktabs tabular: for each f a published / this work / deviation (%) line, nu columns,
+    and the wave speeds c_s, sqrt(2) c_s, c_l (E = 1000 Pa, rho = 1000 kg/m^3) at the bottom."""
+    nus = sorted({r["nu"] for r in rows})
+    fs = sorted({r["f"] for r in rows})
+    at = {(r["nu"], r["f"]): r for r in rows}
+
+    def line(label: str, values: list[str]) -> str:
+        return label + " & " + " & ".join(values) + r" \\"
+
+    def number(value: float, fmt: str) -> str:
+        return f"${value:{fmt}}$"
+
+    out = ["% Generated by `python3 -m analysis aggregate`; needs \\usepackage{booktabs}.",
+           r"\begin{tabular}{ll" + "r" * len(nus) + "}", r"\toprule",
+           r" & & \multicolumn{%d}{c}{Poisson's ratio $\nu$} \\" % len(nus),
+           r"\cmidrule(l){3-%d}" % (len(nus) + 2),
+           line(r"$f$ &", [f"{nu:g}" for nu in nus]), r"\midrule"]
+    for i, f in enumerate(fs):
+        published, regenerated, deviation = [], [], []
+        for nu in nus:
+            r = at.get((nu, f))
+            if r is None:
+                published.append(""), regenerated.append(""), deviation.append("")
+                continue
+            published.append(number(r["published"], ".3f"))
+            if r["celerity"] is None:
+                regenerated.append("--"), deviation.append("")
+            else:
+                regenerated.append(number(r["celerity"], ".3f"))
+                deviation.append(number(100 * r["deviation_rel"], "+.1f"))
+        if i:
+            out.append(r"\addlinespace")
+        out.append(line(f"{f:.2f} & published", published))
+        out.append(line(" & this work", regenerated))
+        out.append(line(r" & deviation (\%)", deviation))
+    speeds = [theory.wave_speeds(nu) for nu in nus]
+    out += [r"\midrule",
+            line(r"$c_s$ &", [number(s[0], ".3f") for s in speeds]),
+            line(r"$\sqrt{2}\,c_s$ &", [number(s[1], ".3f") for s in speeds]),
+            line(r"$c_l$ &", [number(s[2], ".3f") for s in speeds]),
+            r"\bottomrule", r"\end{tabular}"]
+    return "\n".join(out) + "\n"
+
+
+def all_metrics_csv(metrics: list[dict[str, Any]]) -> str:
+    """One row per metrics dict, every scalar key (first-seen order, metrics_file first)."""
+    columns = ["metrics_file"]
+    for m in metrics:
+        for key, value in m.items():
+            if key not in columns and (value is None or isinstance(value, (bool, int, float, str))):
+                columns.append(key)
+    return _csv(columns, metrics, fmt=".10g")
+
+
+def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
+              reference: list[ReferenceCell], tolerance: float) -> tuple[dict[str, str], dict[str, Any]]:
+    """All output texts by file name, and the summary.
+
+    Parameters
+    ----------
+    metrics
+        Every metrics dict given (all_metrics.csv).
+    table_metrics
+        Those that enter Table 1 (after --select).
+    reference
+        The published cells.
+    tolerance
+        Relative tolerance of within_tol.
+    """
+    if not tolerance > 0:
+        raise InputError(f"tolerance must be > 0 (got {tolerance})")
+    rows = table1_rows(table_metrics, reference, tolerance)
+    summary = summarize(rows, tolerance)
+    files = {
+        "table1.csv": table1_csv(rows),
+        "table1.md": table1_markdown(rows, summary),
+        "table1.tex": table1_latex(rows),
+        "summary.json": json.dumps(summary, indent=2) + "\n",
+        "all_metrics.csv": all_metrics_csv(metrics),
+    }
+    return files, summary

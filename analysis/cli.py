@@ -1,0 +1,142 @@
+"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,flutter-boundary} ...`.
+
+Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign; 2 bad input
+(the message on stderr names the file and the problem; no output file is written).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from analysis.errors import AnalysisError
+
+EXIT_FAILED_CHECK = 1
+EXIT_BAD_INPUT = 2
+
+
+def _measure(args: argparse.Namespace) -> int:
+    from analysis.atomic import write_file
+    from analysis.io import load_run
+    from analysis.measure import Settings, measure_run
+
+    settings = Settings(threshold_rel=args.threshold, opening_rel=args.opening_threshold,
+                        window_length=args.window, major_duration=args.major_duration)
+    try:
+        settings.check()
+    except ValueError as err:
+        raise AnalysisError(str(err)) from None
+    metrics = measure_run(load_run(args.run), settings)
+    write_file(args.output, json.dumps(metrics, indent=2, allow_nan=False) + "\n")
+    c, xc = metrics["celerity"], metrics["celerity_xcorr"]
+    print(f"{args.run}: celerity "
+          + ("undefined (" + metrics["celerity_reason"] + ")" if c is None else
+             f"{c:+.4f} m/s (cross-correlation {xc if xc is None else format(xc, '+.4f')})")
+          + f", regime {metrics['regime']}, category {metrics['category']}, "
+          f"min T/N {metrics['min_T_over_N']:.3f} -> {args.output}")
+    return 0
+
+
+def _aggregate(args: argparse.Namespace) -> int:
+    from analysis import aggregate as agg
+    from analysis.atomic import write_files
+    from analysis.reference import read_reference
+
+    reference = read_reference(args.reference)
+    metrics = [agg.load_metrics(path) for path in args.metrics]
+    table_metrics = agg.select(metrics, agg.parse_selection(args.select))
+    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance)
+    write_files({args.output / name: text for name, text in files.items()})
+    print(agg.summary_line(summary) + f" -> {args.output}")
+    return 0
+
+
+def _compare(args: argparse.Namespace) -> int:
+    from analysis.compare import compare, read_table
+    from analysis.reference import read_reference
+
+    result = compare(read_table(args.table), read_reference(args.reference), args.tolerance,
+                     args.min_within)
+    for failure in result.failures:
+        print(failure)
+    print(result.summary())
+    return 0 if result.passed else EXIT_FAILED_CHECK
+
+
+def _flutter_boundary(args: argparse.Namespace) -> int:
+    try:
+        from analysis.flutter import flutter_boundary
+    except ImportError as err:
+        raise AnalysisError(f"the flutter-boundary theory (analysis/flutter.py) is not available: {err}") from None
+    for nu in args.nu:
+        if not 0.0 <= nu < 0.5:
+            raise AnalysisError(f"--nu {nu} outside [0, 0.5)")
+    for nu in args.nu:
+        lower, upper = flutter_boundary(nu)
+        print(f"{nu:g} {lower:.6g} {upper:.6g}")
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    from analysis.aggregate import DEFAULT_TOLERANCE
+    from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
+    from analysis.opening import DEFAULT_OPENING_REL
+    from analysis.reference import DEFAULT_REFERENCE
+
+    parser = argparse.ArgumentParser(prog="python3 -m analysis",
+                                     description="Measure slidewave runs and compare with the paper.")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    p = commands.add_parser("measure", help="one run.h5 -> metrics.json")
+    p.add_argument("run", type=Path, help="run file (format_version 1)")
+    p.add_argument("-o", "--output", type=Path, required=True, help="metrics JSON to write")
+    p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD_REL,
+                   help="slip-velocity threshold relative to V0 (default %(default)g)")
+    p.add_argument("--opening-threshold", type=float, default=DEFAULT_OPENING_REL,
+                   help="opening threshold relative to |Uy| (default %(default)g)")
+    p.add_argument("--window", type=float, default=DEFAULT_WINDOW_LENGTH,
+                   help="celerity window length in s (default %(default)g)")
+    p.add_argument("--major-duration", type=float, default=DEFAULT_MAJOR_DURATION,
+                   help="a front followed this long (s) is major (default %(default)g)")
+    p.set_defaults(handler=_measure)
+
+    p = commands.add_parser("aggregate", help="metrics files -> Table 1 (CSV, Markdown, LaTeX), summary")
+    p.add_argument("metrics", type=Path, nargs="+", help="metrics JSON files")
+    p.add_argument("-o", "--output", type=Path, required=True, help="output folder")
+    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
+                   help="published celerities (default %(default)s)")
+    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
+                   help="relative tolerance of within_tol (default %(default)g)")
+    p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
+                   help="only metrics with this value enter Table 1 (repeatable), e.g. elements_per_H=32")
+    p.set_defaults(handler=_aggregate)
+
+    p = commands.add_parser("compare", help="check a table1.csv against the published celerities")
+    p.add_argument("table", type=Path, help="table with columns nu, f, celerity")
+    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
+                   help="published celerities (default %(default)s)")
+    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
+                   help="relative tolerance (default %(default)g)")
+    p.add_argument("--min-within", type=int, default=0,
+                   help="fail when fewer cells are within tolerance (default %(default)s)")
+    p.set_defaults(handler=_compare)
+
+    p = commands.add_parser("flutter-boundary",
+                            help="print 'nu f_lower f_upper' of the flutter wedge, one line per nu")
+    p.add_argument("--nu", type=float, nargs="+", required=True, help="Poisson's ratios")
+    p.set_defaults(handler=_flutter_boundary)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return args.handler(args)
+    except AnalysisError as err:
+        print(f"error: {err}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except OSError as err:
+        print(f"error: {err.filename or ''}: {err.strerror or err}", file=sys.stderr)
+        return EXIT_BAD_INPUT

@@ -1,0 +1,108 @@
+"""Check a regenerated Table 1 against the published celerities.
+
+A cell is *compared* when the table gives it a celerity. It fails when its sign differs from the
+published one, or when |celerity - published| / |published| exceeds the tolerance. The check also
+fails when fewer than `min_within` cells are within tolerance (so that an empty table cannot pass
+when something is required of it). Deviations are recomputed from the reference; the table's own
+`published` and `deviation_rel` columns are not trusted.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from analysis.errors import InputError
+from analysis.reference import ReferenceCell, cell_key
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """Outcome: failures (one message per failing cell), counts and whether the check passed."""
+
+    failures: list[str]
+    compared: int
+    within: int
+    sign_matches: int
+    missing: int
+    min_within: int
+    tolerance: float
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures and self.within >= self.min_within
+
+    def summary(self) -> str:
+        verdict = "PASS" if self.passed else "FAIL"
+        return (f"compare: {verdict}: {self.compared} cells compared, {self.within} within "
+                f"{100 * self.tolerance:g}% (at least {self.min_within} required), "
+                f"signs {self.sign_matches}/{self.compared}, {self.missing} published cells without "
+                f"a measurement")
+
+
+def read_table(path: str | Path) -> dict[tuple[float, float], float]:
+    """(nu, f) -> celerity (m/s, nan when empty) of a table with columns nu, f, celerity."""
+    try:
+        with open(path, newline="") as stream:
+            reader = csv.DictReader(stream)
+            missing = [c for c in ("nu", "f", "celerity") if c not in (reader.fieldnames or [])]
+            if missing:
+                raise InputError(f"{path}: table lacks column(s) {', '.join(missing)}")
+            table: dict[tuple[float, float], float] = {}
+            for line, row in enumerate(reader, 2):
+                try:
+                    key = cell_key(float(row["nu"]), float(row["f"]))
+                    text = (row["celerity"] or "").strip()
+                    value = float(text) if text else math.nan
+                except (TypeError, ValueError):
+                    raise InputError(f"{path}:{line}: not a number in nu, f or celerity: "
+                                     f"{row.get('nu')!r}, {row.get('f')!r}, {row.get('celerity')!r}") from None
+                if key in table:
+                    raise InputError(f"{path}:{line}: cell nu={key[0]:g} f={key[1]:g} appears twice")
+                table[key] = value
+    except OSError as err:
+        raise InputError(f"{path}: cannot read table ({err.strerror})") from None
+    return table
+
+
+def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCell],
+            tolerance: float, min_within: int = 0) -> Comparison:
+    """Compare every published cell that the table measures.
+
+    Parameters
+    ----------
+    table
+        From read_table.
+    reference
+        The published cells.
+    tolerance
+        Relative tolerance (> 0).
+    min_within
+        Fewest cells that must be within tolerance (>= 0).
+    """
+    if not tolerance > 0:
+        raise InputError(f"--tolerance must be > 0 (got {tolerance})")
+    if min_within < 0:
+        raise InputError(f"--min-within must be >= 0 (got {min_within})")
+    failures = []
+    compared = within = signs = missing = 0
+    for cell in reference:
+        c = table.get(cell.key, math.nan)
+        if not math.isfinite(c):
+            missing += 1
+            continue
+        compared += 1
+        deviation = (c - cell.celerity) / abs(cell.celerity)
+        where = f"nu={cell.nu:g} f={cell.f:g}: celerity {c:.4f} m/s vs published {cell.celerity:.3f} m/s"
+        if (c > 0) != (cell.celerity > 0):
+            failures.append(f"WRONG SIGN {where}")
+            continue
+        signs += 1
+        if abs(deviation) <= tolerance:
+            within += 1
+        else:
+            failures.append(f"OUT OF TOLERANCE {where} ({100 * deviation:+.1f}%, "
+                            f"tolerance {100 * tolerance:g}%)")
+    return Comparison(failures, compared, within, signs, missing, min_within, tolerance)

@@ -1,0 +1,32 @@
+"""Energy balance of a run, from the solver's global series.
+
+The solver writes residual(t) = (E_kin + E_el + D_fric)(t) - (E_kin + E_el)(0) - W_ext(t) (J/m).
+The error is max |residual| relative to the energy that flowed in the run: the largest of
+max |W_ext|, max |E_el(t) - E_el(0)|, max E_kin and max D_fric (the stored preload energy E_el(0)
+would make any error look small, so it is not the scale).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def energy_balance_error(energy_kinetic: np.ndarray, energy_elastic: np.ndarray,
+                         work_external: np.ndarray, dissipation_friction: np.ndarray,
+                         residual: np.ndarray) -> tuple[float, float]:
+    """(relative error, max |residual| in J/m); the relative error is nan when no energy flowed.
+
+    Parameters
+    ----------
+    energy_kinetic, energy_elastic, work_external, dissipation_friction, residual
+        Global series (J/m per unit depth), same length, from t = 0.
+    """
+    residual_max = float(np.max(np.abs(residual))) if np.size(residual) else math.nan
+    scale = max(float(np.max(np.abs(work_external))),
+                float(np.max(np.abs(energy_elastic - energy_elastic[0]))),
+                float(np.max(energy_kinetic)), float(np.max(dissipation_friction)))
+    if not scale > 0:
+        return math.nan, residual_max
+    return residual_max / scale, residual_max

@@ -1,0 +1,301 @@
+"""One run -> its metrics (the `metrics.json` of docs/contracts.md section 3).
+
+`measure_run` is a pure function of a loaded run (`analysis.io.RunData`) and the measurement
+settings; `analysis/README.md` explains every key. Values that cannot be measured are None
+(JSON null), never a guess.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from analysis import celerity as cel
+from analysis import energy, inversion, opening, pulses, regime, theory
+from analysis.io import RunData
+
+#: Version of the measurement definitions, written into every metrics file.
+ANALYSIS_VERSION = "1"
+
+#: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
+QUALITY_AGREEMENT = 0.02
+#: |drift| above this -> "unsteady";
+QUALITY_DRIFT = 0.05
+#: |c| dt_out above this fraction of the pulse spacing -> "aliasing_risk" (the limit is 1/2).
+ALIASING_FRACTION = 0.4
+
+#: Run parameters copied into the metrics: key -> (config group, config key).
+PARAMETERS = {
+    "E": ("material", "E"), "nu": ("material", "nu"), "rho": ("material", "rho"),
+    "H": ("geometry", "H"), "lambda_over_H": ("geometry", "lambda_over_H"),
+    "elements_per_H": ("mesh", "elements_per_H"), "integration": ("mesh", "integration"),
+    "mass": ("mesh", "mass"), "Uy_over_H": ("loading", "Uy_over_H"),
+    "preshear_ratio": ("loading", "preshear_ratio"), "V0_over_cs": ("loading", "V0_over_cs"),
+    "f": ("friction", "f"), "regularization": ("friction", "regularization"),
+    "hht_alpha": ("time", "hht_alpha"), "contact_weighting": ("time", "contact_weighting"),
+    "stop_after_opening": ("time", "stop_after_opening"),
+    "perturbation_amplitude": ("perturbation", "amplitude"), "seed": ("perturbation", "seed"),
+    "interface_stride": ("output", "interface_stride"),
+}
+#: Parameters also present as root attributes (used when the config lacks them).
+_ATTRIBUTE_FALLBACK = ("E", "nu", "rho", "H", "f")
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Measurement settings (all documented in analysis/README.md).
+
+    threshold_rel: slip-velocity threshold / V0; opening_rel: opening threshold / |Uy|;
+    window_length (s); major_duration (s); min_speed_rel: slowest front / c_s;
+    onset_rel: slip velocity / V0 that marks the first slip; drop_rel: smallest frictional drop / f;
+    sensitivity_threshold_factor: the threshold of the sensitivity re-measurement / threshold.
+    """
+
+    threshold_rel: float = cel.DEFAULT_THRESHOLD_REL
+    opening_rel: float = opening.DEFAULT_OPENING_REL
+    window_length: float = cel.DEFAULT_WINDOW_LENGTH
+    major_duration: float = cel.DEFAULT_MAJOR_DURATION
+    min_speed_rel: float = 0.1
+    onset_rel: float = 0.1
+    drop_rel: float = 0.1
+    sensitivity_threshold_factor: float = 10.0
+
+    def check(self) -> None:
+        """ValueError naming every setting out of range."""
+        problems = [f"{name} = {getattr(self, name)} must be > 0" for name in
+                    ("threshold_rel", "opening_rel", "window_length", "major_duration",
+                     "min_speed_rel", "onset_rel", "drop_rel", "sensitivity_threshold_factor")
+                    if not getattr(self, name) > 0]
+        if problems:
+            raise ValueError("; ".join(problems))
+
+
+def _parameters(run: RunData) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, (group, name) in PARAMETERS.items():
+        value = run.config.get(group, {}).get(name) if isinstance(run.config.get(group), dict) else None
+        if value is None and key in _ATTRIBUTE_FALLBACK:
+            value = run.attrs[key]
+        out[key] = value
+    if out["lambda_over_H"] is None:
+        out["lambda_over_H"] = run.attr("lambda") / run.attr("H")
+    if out["elements_per_H"] is None:
+        out["elements_per_H"] = int(round(run.attr("H") / run.attr("h")))
+    out["dt"] = run.attr("dt")
+    out["t_end"] = run.attr("t_end")
+    return out
+
+
+def _preload_displacement(run: RunData, parameters: dict[str, Any]) -> float:
+    """Uy (m): from the config, else from p0 (theory.preload_pressure inverted)."""
+    H = run.attr("H")
+    if parameters.get("Uy_over_H") is not None:
+        return float(parameters["Uy_over_H"]) * H
+    nu, E = run.attr("nu"), run.attr("E")
+    return -run.attr("p0") * H * (1 + nu) * (1 - 2 * nu) / (E * (1 - nu))
+
+
+def _onset_time(t: np.ndarray, v: np.ndarray, state: np.ndarray, speed: float) -> float:
+    """First output time (s) at which a node is in the slip state with slip velocity > speed."""
+    slipping = ((state == 2) & (v > speed)).any(axis=1)
+    frames = np.flatnonzero(slipping)
+    return float(t[frames[0]]) if frames.size else math.nan
+
+
+def _relative(a: float, b: float) -> float:
+    """(a - b) / |b|, nan when either is nan or b = 0."""
+    if not (math.isfinite(a) and math.isfinite(b)) or b == 0:
+        return math.nan
+    return (a - b) / abs(b)
+
+
+def _fronts_at(tracks: list[cel.EdgeTrack], time: float) -> np.ndarray:
+    positions = []
+    for track in tracks:
+        k = np.flatnonzero(np.isclose(track.t, time, rtol=0, atol=1e-9 * max(1.0, abs(time))))
+        if k.size:
+            positions.append(track.position[k[0]])
+    return np.array(positions)
+
+
+def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any]:
+    """Metrics of one run.
+
+    Parameters
+    ----------
+    run
+        A loaded run (analysis.io.load_run).
+    settings
+        Measurement settings; None = the documented defaults.
+
+    Returns
+    -------
+    dict
+        JSON-ready metrics (floats, ints, bools, strings, None, lists); see analysis/README.md.
+    """
+    settings = settings or Settings()
+    settings.check()
+    interface, series = run.interface, run.global_series
+    parameters = _parameters(run)
+    E, nu, H, f = (run.attr(k) for k in ("E", "nu", "H", "f"))
+    c_s, c_l, V0 = run.attr("c_s"), run.attr("c_l"), run.attr("V0")
+    Uy = _preload_displacement(run, parameters)
+    p0 = run.attr("p0")
+    x, t, v = interface.x, interface.t, interface.slip_velocity
+
+    # 1. Onset of slip.
+    onset_time = _onset_time(t, v, interface.state, settings.onset_rel * V0)
+    onset_estimate = (math.nan if parameters["preshear_ratio"] is None else theory.onset_time_estimate(
+        f=f, preshear_ratio=float(parameters["preshear_ratio"]), p0=p0, H=H, E=E, nu=nu, V0=V0))
+
+    # 2. Slip fronts and celerity (threshold method), then the cross-correlation estimate.
+    threshold = settings.threshold_rel * V0
+    min_speed = settings.min_speed_rel * c_s
+    front_map = cel.find_edges(x, t, v, threshold)
+    kw = dict(min_speed=min_speed, window_length=settings.window_length,
+              major_duration=settings.major_duration)
+    result = cel.celerity_from_fronts(front_map, **kw)
+    c_p = result.celerity
+    xcorr = (cel.celerity_by_xcorr(x, t, v, result.window) if result.window is not None
+             else cel.XcorrResult(math.nan))
+
+    # 3. Opening.
+    open_threshold = opening.opening_threshold(Uy, settings.opening_rel)
+    opened = opening.summarize_opening(x, t, interface.opening, open_threshold)
+    behind = inside_slip = None
+    major_same_direction = [track for track, direction in
+                            cel.major_fronts(front_map, min_speed=min_speed,
+                                             major_duration=settings.major_duration)
+                            if direction == result.direction != 0]
+    if opened.opened:
+        k = int(np.flatnonzero(t == opened.t_first)[0])
+        i = int(np.argmin(np.abs(x - opened.x_first)))
+        inside_slip = bool(cel.slipping_mask(v[k], threshold)[i])
+        behind = opening.distance_behind_front(opened.x_first,
+                                               _fronts_at(major_same_direction, opened.t_first),
+                                               result.direction, front_map.grid.period)
+
+    # 4. Sensitivity of the celerity: window from the first opening; a higher threshold.
+    c_opening_window = math.nan
+    if opened.opened and result.reason == "ok":
+        c_opening_window = cel.celerity_from_fronts(front_map, window_start=opened.t_first, **kw).celerity
+    high = cel.celerity_from_fronts(
+        cel.find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
+
+    # 5. T/N: minimum, inversion, frictional drops.
+    min_ratio, t_min_ratio = inversion.minimum_ratio(series.t, series.T_over_N)
+    drops = inversion.frictional_drops(series.t, series.T_over_N, settings.drop_rel * f,
+                                       smooth_time=H / c_s)
+    first = drops[0] if drops else None
+
+    # 6. Pulse train, regime, category, energy.
+    count, spacing = pulses.pulse_train(result.fronts, front_map.grid.period)
+    spacing_theory = theory.pulse_spacing(c_p, c_s, H)
+    inverted = bool(min_ratio < 0)
+    balance_error, residual_max = energy.energy_balance_error(
+        series.energy_kinetic, series.energy_elastic, series.work_external,
+        series.dissipation_friction, series.energy_balance_residual)
+    spacing_limit = spacing if math.isfinite(spacing) else front_map.grid.period
+    agreement = abs(_relative(xcorr.celerity, c_p))
+    aliasing_risk = (bool(result.frame_shift > ALIASING_FRACTION * spacing_limit)
+                     if math.isfinite(result.frame_shift) else None)
+    quality = None
+    if result.reason == "ok":
+        concerns = [name for name, bad in (
+            ("estimates_disagree", not agreement <= QUALITY_AGREEMENT),
+            ("unsteady", not abs(result.drift) <= QUALITY_DRIFT),
+            ("aliasing_risk", aliasing_risk),
+            ("counter_fronts", result.n_counter_fronts > 0),
+            ("short_window", result.window[1] - result.window[0] < 0.5 * settings.window_length),
+        ) if bad]
+        quality = ";".join(concerns) or "ok"
+
+    metrics: dict[str, Any] = {
+        "source": run.path,
+        "analysis_version": ANALYSIS_VERSION,
+        "slidewave_version": run.attrs.get("slidewave_version"),
+        "git_commit": run.attrs.get("git_commit"),
+        "run_complete": bool(run.attrs.get("complete")),
+        "end_reason": run.attrs.get("end_reason"),
+        **parameters,
+        "c_s": c_s, "c_l": c_l, "sqrt2_c_s": math.sqrt(2.0) * c_s, "p0": p0, "V0": V0,
+        "lambda": front_map.grid.period, "dx": front_map.grid.dx,
+        "output_interval": front_map.output_interval,
+        "slip_threshold": threshold, "threshold_rel": settings.threshold_rel,
+        "window_length": settings.window_length, "major_duration": settings.major_duration,
+        "onset_time": onset_time,
+        "onset_time_estimate": onset_estimate,
+        "celerity": c_p,
+        "celerity_reason": result.reason,
+        "celerity_window": list(result.window) if result.window else None,
+        "celerity_window_start": result.window[0] if result.window else math.nan,
+        "celerity_window_end": result.window[1] if result.window else math.nan,
+        "localization_time": result.t_localized,
+        "celerity_stderr": result.stderr,
+        "celerity_r2": result.r2,
+        "celerity_rms": result.rms,
+        "celerity_n_fronts": result.n_fronts,
+        "celerity_n_points": result.n_points,
+        "celerity_n_counter_fronts": result.n_counter_fronts,
+        "celerity_n_secondary_fronts": result.n_secondary_fronts,
+        "celerity_drift": result.drift,
+        "celerity_frame_shift": result.frame_shift,
+        "celerity_aliasing_risk": aliasing_risk,
+        "celerity_quality": quality,
+        "celerity_xcorr": xcorr.celerity,
+        "celerity_xcorr_peak": xcorr.peak_correlation,
+        "celerity_agreement": agreement,
+        "celerity_opening_window": c_opening_window,
+        "celerity_window_sensitivity": _relative(c_opening_window, c_p),
+        "celerity_high_threshold": high.celerity,
+        "celerity_threshold_sensitivity": _relative(high.celerity, c_p),
+        "regime": regime.regime(c_p, c_s, c_l),
+        "below_sqrt2_cs": regime.below_sqrt2_cs(c_p, c_s),
+        "opening": opened.opened,
+        "max_opening": opened.max_opening,
+        "max_opening_time": opened.t_max,
+        "opening_threshold": open_threshold,
+        "first_opening_time": opened.t_first,
+        "first_opening_x": opened.x_first,
+        "opening_delay_after_localization": opened.t_first - result.t_localized,
+        "opening_behind_front": behind,
+        "opening_inside_slip": inside_slip,
+        "open_fraction_max": opened.open_fraction_max,
+        "min_T_over_N": min_ratio,
+        "min_T_over_N_time": t_min_ratio,
+        "inversion": inverted,
+        "n_drops": len(drops),
+        "first_drop_start_time": first.t_start if first else math.nan,
+        "first_drop_start_T_over_N": first.T_over_N_start if first else math.nan,
+        "first_drop_bottom_time": first.t_bottom if first else math.nan,
+        "first_drop_bottom_T_over_N": first.T_over_N_bottom if first else math.nan,
+        "later_drops_start_T_over_N": [d.T_over_N_start for d in drops[1:]],
+        "category": regime.category(slipped=front_map.n_slipping_frames > 0,
+                                    has_front=front_map.n_edge_frames > 0, opened=opened.opened,
+                                    celerity=c_p, c_s=c_s, c_l=c_l, inversion=inverted),
+        "pulse_count": count,
+        "pulse_spacing": spacing,
+        "pulse_spacing_theory": spacing_theory,
+        "pulse_count_theory": pulses.expected_pulse_count(front_map.grid.period, spacing_theory),
+        "energy_balance_error": balance_error,
+        "energy_balance_residual_max": residual_max,
+        "contact_residual_max": float(np.max(series.contact_residual)),
+        "contact_iterations_max": int(np.max(series.contact_iterations)),
+    }
+    return json_ready(metrics)
+
+
+def json_ready(value: Any) -> Any:
+    """Recursively: numpy scalars -> Python, nan/inf -> None, tuples -> lists."""
+    if isinstance(value, dict):
+        return {str(k): json_ready(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return [json_ready(v) for v in value]
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value

@@ -1,0 +1,77 @@
+"""Regime of a slip front and the category of a run for the phase diagram (paper Fig. 4a).
+
+Regime from |c_p|: subsonic (|c_p| < c_s), intersonic (c_s <= |c_p| <= c_l), supersonic
+(|c_p| > c_l). Categories, from what a run shows:
+
+- ``no_slip``: the interface never slips (above the threshold);
+- ``uniform_slip``: it slips, never in localized pulses, and never opens;
+- ``no_opening``: slip fronts, no opening (the paper's open circles);
+- ``intersonic_opening``: opening, front intersonic in the sliding direction (+x) (squares);
+- ``intersonic_opening_inversion``: the same with T/N < 0 at some time (double squares);
+- ``supersonic_backward_opening``: opening, front supersonic against the sliding direction
+  (diamonds; inversion is reported separately);
+- the honest others: ``supersonic_forward_opening`` (e.g. the paper's nu = 0, f = 2),
+  ``intersonic_backward_opening``, ``subsonic_forward_opening``, ``subsonic_backward_opening``,
+  and ``opening_without_front`` (opens, but no front could be measured).
+"""
+
+from __future__ import annotations
+
+import math
+
+CATEGORIES = (
+    "no_slip", "uniform_slip", "no_opening", "intersonic_opening", "intersonic_opening_inversion",
+    "supersonic_backward_opening", "supersonic_forward_opening", "intersonic_backward_opening",
+    "subsonic_forward_opening", "subsonic_backward_opening", "opening_without_front",
+)
+
+
+def regime(celerity: float, c_s: float, c_l: float) -> str | None:
+    """'subsonic', 'intersonic' or 'supersonic' from |celerity| (m/s); None if nan."""
+    if celerity is None or not math.isfinite(celerity):
+        return None
+    speed = abs(celerity)
+    if speed < c_s:
+        return "subsonic"
+    if speed <= c_l:
+        return "intersonic"
+    return "supersonic"
+
+
+def below_sqrt2_cs(celerity: float, c_s: float) -> bool | None:
+    """|celerity| < sqrt(2) c_s (the speed range favourable to opening); None if nan."""
+    if celerity is None or not math.isfinite(celerity):
+        return None
+    return abs(celerity) < math.sqrt(2.0) * c_s
+
+
+def category(*, slipped: bool, has_front: bool, opened: bool, celerity: float, c_s: float,
+             c_l: float, inversion: bool) -> str:
+    """Phase-diagram category (see the module docstring).
+
+    Parameters
+    ----------
+    slipped
+        The slip velocity exceeded the threshold somewhere at some time.
+    has_front
+        The slipping set had edges (was localized) at some time.
+    opened
+        The opening exceeded its threshold.
+    celerity
+        Signed front celerity (m/s), nan if not measured.
+    c_s, c_l
+        Wave speeds (m/s).
+    inversion
+        min T/N < 0.
+    """
+    if not opened:
+        if not slipped:
+            return "no_slip"
+        return "no_opening" if has_front else "uniform_slip"
+    speed_regime = regime(celerity, c_s, c_l)
+    if speed_regime is None:
+        return "opening_without_front"
+    direction = "forward" if celerity > 0 else "backward"
+    if speed_regime == "intersonic" and direction == "forward":
+        return "intersonic_opening_inversion" if inversion else "intersonic_opening"
+    return f"{speed_regime}_{direction}_opening"

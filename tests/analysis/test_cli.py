@@ -1,0 +1,73 @@
+"""The measure and flutter-boundary commands."""
+
+import json
+import subprocess
+import sys
+import types
+from pathlib import Path
+
+import pytest
+
+from analysis import cli
+from synthetic_run import Scenario, paper_case
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def run_cli(*args):
+    return subprocess.run([sys.executable, "-m", "analysis", *map(str, args)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=120)
+
+
+def test_measure_command(run_file, tmp_path):
+    out = tmp_path / "out" / "metrics.json"
+    result = run_cli("measure", run_file(paper_case()), "-o", out, "--threshold", "20")
+    assert result.returncode == 0, result.stderr
+    assert "celerity +0.88" in result.stdout and "intersonic_opening_inversion" in result.stdout
+    metrics = json.loads(out.read_text())
+    assert metrics["threshold_rel"] == 20.0
+    assert metrics["celerity"] == pytest.approx(0.882, rel=5e-3)
+    assert [p.name for p in out.parent.iterdir()] == ["metrics.json"]  # no temporary left
+
+
+def test_measure_rejects_an_old_file_and_writes_nothing(run_file, tmp_path):
+    out = tmp_path / "metrics.json"
+    result = run_cli("measure", run_file(Scenario(format_version=0)), "-o", out)
+    assert result.returncode == 2
+    assert "format_version 0 is not supported" in result.stderr and "Traceback" not in result.stderr
+    assert not out.exists()
+
+
+def test_measure_rejects_bad_settings(run_file, tmp_path, capsys):
+    out = tmp_path / "metrics.json"
+    assert cli.main(["measure", str(run_file(paper_case())), "-o", str(out), "--window", "-5"]) == 2
+    assert "window_length = -5.0 must be > 0" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_flutter_boundary_command_calls_analysis_flutter(monkeypatch, capsys):
+    calls = []
+
+    def boundary(nu):
+        calls.append(nu)
+        return (1.0, float("inf")) if nu < 0.25 else (float("nan"), float("nan"))
+
+    monkeypatch.setitem(sys.modules, "analysis.flutter", types.SimpleNamespace(flutter_boundary=boundary))
+    assert cli.main(["flutter-boundary", "--nu", "0", "0.1", "0.4"]) == 0
+    assert capsys.readouterr().out.splitlines() == ["0 1 inf", "0.1 1 inf", "0.4 nan nan"]
+    assert calls == [0.0, 0.1, 0.4]
+    assert cli.main(["flutter-boundary", "--nu", "0.5"]) == 2
+    assert "outside [0, 0.5)" in capsys.readouterr().err
+
+
+def test_flutter_boundary_command_with_the_real_module():
+    flutter = pytest.importorskip("analysis.flutter")
+    if not hasattr(flutter, "flutter_boundary"):
+        pytest.skip("analysis.flutter has no flutter_boundary yet")
+    result = run_cli("flutter-boundary", "--nu", "0", "0.3")
+    assert result.returncode == 0, result.stderr
+    lines = [line.split() for line in result.stdout.splitlines()]
+    assert [line[0] for line in lines] == ["0", "0.3"] and all(len(line) == 3 for line in lines)
+    for line in lines:
+        for token in line[1:]:
+            float(token)  # numbers, inf or nan
