@@ -12,7 +12,7 @@
 namespace slidewave {
 
 double opening_threshold(const RunConfig& config) {
-  return 1e-3 * std::fabs(config.loading.Uy_over_H) * config.geometry.H;
+  return 1e-2 * std::fabs(config.loading.Uy_over_H) * config.geometry.H;
 }
 
 namespace {

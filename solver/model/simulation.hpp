@@ -27,7 +27,8 @@ using ProgressCallback = std::function<void(double, double, double, double, int)
 RunRecord simulate(const LayerModel& model, const ProgressCallback& progress = {},
                    const std::atomic<bool>* stop_requested = nullptr, StepProfile* profile = nullptr);
 
-/// Threshold above which a contact node counts as open (m): 1e-3 of the preload displacement |Uy|.
+/// Threshold above which a contact node counts as open (m): 1 % of the preload displacement |Uy|
+/// (the same as analysis/opening.py, which documents the evidence for it).
 double opening_threshold(const RunConfig& config);
 
 }  // namespace slidewave

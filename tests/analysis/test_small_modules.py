@@ -31,7 +31,7 @@ def test_opening_summary_and_distance_behind_front():
     x = np.arange(10.0)
     t = np.array([0.0, 1.0, 2.0])
     u = np.full((3, 10), 1e-13)
-    u[1, 4] = 3e-5
+    u[1, 4] = 3e-4
     u[2, 5] = 2e-2
     s = opening.summarize_opening(x, t, u, opening.opening_threshold(-0.025))
     assert s.opened and s.t_first == 1.0 and s.x_first == 4.0

@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""Slip-front celerity against Poisson's ratio, one colour per friction coefficient (paper Fig. 4b).
+
+    figures/celerity_vs_nu.py table1.csv --out fig4b
+
+Reads the columns nu, f, celerity (regenerated, m/s, signed: + = sliding direction) and published
+(the paper's Table 1, m/s) of table1.csv; empty cells are skipped. Filled circles: regenerated;
+open circles: published; a thin line joins the two values of one cell. The upper panel shows the
+fronts running in the sliding direction, the lower one those running against it (mirrored wave
+speeds -c_s, -sqrt2 c_s, -c_l). Theory curves for E and rho (default 1000 Pa, 1000 kg/m^3, the
+paper's values) unless the table carries c_s and c_l columns.
+"""
+import argparse
+import math
+
+import numpy as np
+from matplotlib.colors import BoundaryNorm
+from matplotlib.lines import Line2D
+
+import _style
+from _data import InputError, read_csv, select, wave_speeds
+
+REQUIRED = ("nu", "f", "celerity", "published")
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("table", help="table1.csv with nu, f, celerity, published")
+    parser.add_argument("--E", type=float, default=1000.0, help="Young's modulus of the theory curves (Pa)")
+    parser.add_argument("--rho", type=float, default=1000.0, help="density of the theory curves (kg/m^3)")
+    parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
+                        help="keep only the rows with these values")
+    parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
+    return parser.parse_args(argv)
+
+
+def finite(value):
+    return isinstance(value, float) and math.isfinite(value)
+
+
+def main(argv=None):
+    # 1. Parse options and read the table.
+    args = parse_args(argv)
+    rows = select(read_csv(args.table, REQUIRED), args.where, args.table)
+    for r in rows:
+        for column in ("celerity", "published"):
+            if not (finite(r[column]) or (isinstance(r[column], float) and math.isnan(r[column]))):
+                raise InputError(f"{args.table}: column '{column}' holds '{r[column]}' "
+                                 f"(nu={r['nu']}, f={r['f']}); expected a number or empty")
+    rows = [r for r in rows if finite(r["celerity"]) or finite(r["published"])]
+    if not rows:
+        raise InputError(f"{args.table}: no row with a regenerated or published celerity")
+    fs = sorted({r["f"] for r in rows})
+    # One colour per friction coefficient, equally spaced whatever the f values.
+    cmap = _style.plt.get_cmap("viridis", len(fs))
+    norm = BoundaryNorm(np.arange(len(fs) + 1) - 0.5, cmap.N)
+    color_of = {f: cmap(norm(i)) for i, f in enumerate(fs)}
+
+    # 2. Two panels: c_p > 0 above, c_p < 0 below; the theory mirrored in the lower one.
+    fig, (up, down) = _style.plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True,
+                                          gridspec_kw=dict(height_ratios=[3, 2], hspace=0.08))
+    nu = np.linspace(0.0, max(0.495, max(r["nu"] for r in rows)), 300)
+    c_s, c_l = wave_speeds(nu, args.E, args.rho)
+    theory = {"c_l": c_l, "c_s": c_s, "sqrt2_c_s": math.sqrt(2.0) * c_s}
+    for key, values in theory.items():
+        style = dict(_style.THEORY_STYLE[key])
+        up.plot(nu, values, lw=1.2, **style)
+        style["label"] = "$-$" + style["label"]
+        down.plot(nu, -values, lw=1.2, **style)
+
+    # 3. Data: published open, regenerated filled, joined per cell.
+    for r in rows:
+        color = color_of[r["f"]]
+        both = finite(r["celerity"]) and finite(r["published"])
+        for ax in (up, down):
+            if both:
+                ax.plot([r["nu"]] * 2, [r["published"], r["celerity"]], color=color, lw=0.8,
+                        alpha=0.7)
+            if finite(r["published"]):
+                ax.plot(r["nu"], r["published"], "o", mfc="none", mec=color, ms=7, mew=1.2)
+            if finite(r["celerity"]):
+                ax.plot(r["nu"], r["celerity"], "o", color=color, ms=4.5)
+
+    # 4. Limits from the data, legends, colour bar.
+    values = [v for r in rows for v in (r["celerity"], r["published"]) if finite(v)]
+    positive = [v for v in values if v > 0] or [1.0]
+    negative = [v for v in values if v < 0] or [-1.0]
+    up.set_ylim(min(0.5, 0.95 * min(positive)), max(1.5, 1.05 * max(positive)))
+    down.set_ylim(min(-1.5, 1.1 * min(negative)), 0.0)
+    up.set_ylabel("$c_p$ > 0: sliding direction (m/s)")
+    down.set_ylabel("$c_p$ < 0: against sliding (m/s)")
+    down.set_xlabel("Poisson's ratio $\\nu$ (-)")
+    down.set_xlim(-0.02, nu[-1] + 0.01)
+    markers = [Line2D([], [], ls="none", marker="o", color="0.3", ms=4.5, label="regenerated"),
+               Line2D([], [], ls="none", marker="o", mfc="none", mec="0.3", ms=7,
+                      label="published (Yastrebov 2016)")]
+    up.legend(handles=up.get_legend_handles_labels()[0] + markers, loc="upper left", ncol=2,
+              fontsize=8, framealpha=0.9)
+    down.legend(loc="lower left", fontsize=8, ncol=3, framealpha=0.9)
+    for ax in (up, down):
+        ax.grid(alpha=0.25)
+    bar = fig.colorbar(_style.plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=[up, down],
+                       ticks=range(len(fs)), fraction=0.04, pad=0.02)
+    bar.ax.set_yticklabels([f"{f:g}" for f in fs])
+    bar.set_label("friction coefficient $f$ (-)")
+    bar.ax.tick_params(labelsize=7)
+    n_both = sum(finite(r["celerity"]) and finite(r["published"]) for r in rows)
+    shared = _style.common_label(rows, skip=("nu", "f"))
+    up.set_title(f"Slip-front celerity $c_p$: {n_both} cells with both values; wave speeds for "
+                 f"$E$ = {args.E:g} Pa, $\\rho$ = {args.rho:g} kg/m$^3$"
+                 + (f"\n{shared}" if shared else ""))
+    _style.save(fig, args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    _style.cli(main)

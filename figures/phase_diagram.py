@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Phase diagram of the sliding regimes in the (nu, f) plane (paper Fig. 4a).
+
+    figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --out fig4a
+    figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --where elements_per_H=64 --out fig4a
+
+One marker per run from the `category` column: open circle no opening, square intersonic opening
+in the sliding direction, double square the same with inversion of T/N, diamond supersonic opening
+against the sliding direction; any other category gets its own marker, named in the legend. The
+dash-dotted lines bound the flutter wedge read from `flutter.txt` (lines `nu f_lower f_upper`, as
+printed by `python3 -m analysis flutter-boundary`; `inf` = unbounded, `nan` = no instability).
+Each (nu, f) must appear once: restrict a mixed table with --where column=value.
+"""
+import argparse
+from collections import Counter
+
+import numpy as np
+from matplotlib.legend_handler import HandlerTuple
+from matplotlib.lines import Line2D
+
+import _style
+from _data import InputError, read_csv, read_flutter, select
+
+REQUIRED = ("nu", "f", "category")
+KNOWN = {
+    "no_opening": ("no opening", [dict(marker="o", mfc="white", mec="0.3", ms=7, mew=1.0)]),
+    "intersonic_opening": ("intersonic opening wave, sliding direction",
+                           [dict(marker="s", mfc="tab:blue", mec="tab:blue", ms=7)]),
+    "intersonic_opening_inversion": (
+        "intersonic opening wave with inversion of $T/N$",
+        [dict(marker="s", mfc="white", mec="navy", ms=11, mew=1.2),
+         dict(marker="s", mfc="navy", mec="navy", ms=5.5)]),
+    "supersonic_backward_opening": ("supersonic opening wave against the sliding direction",
+                                    [dict(marker="D", mfc="tab:red", mec="tab:red", ms=7)]),
+}
+OTHER_MARKERS = ["^", "v", "P", "X", "*", "h", "<", ">"]
+OTHER_COLORS = ["tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
+
+
+def styles_for(categories):
+    styles, k = dict(KNOWN), 0
+    for category in sorted(categories):
+        if category not in styles:
+            styles[category] = (str(category).replace("_", " "), [dict(
+                marker=OTHER_MARKERS[k % len(OTHER_MARKERS)], ms=8, mec="black", mew=0.5,
+                mfc=OTHER_COLORS[k % len(OTHER_COLORS)])])
+            k += 1
+    return styles
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("metrics", help="all_metrics.csv (one row per run)")
+    parser.add_argument("--flutter", required=True, help="flutter.txt: lines 'nu f_lower f_upper'")
+    parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
+                        help="keep only the rows with these values")
+    parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
+    return parser.parse_args(argv)
+
+
+def main(argv=None):
+    # 1. Parse options, read the runs and the flutter boundary.
+    args = parse_args(argv)
+    rows = select(read_csv(args.metrics, REQUIRED), args.where, args.metrics)
+    repeated = [k for k, n in Counter((r["nu"], r["f"]) for r in rows).items() if n > 1]
+    if repeated:
+        raise InputError(f"{args.metrics}: {len(repeated)} (nu, f) point(s) appear more than once "
+                         f"(e.g. nu={repeated[0][0]:g}, f={repeated[0][1]:g}); select one study "
+                         "with --where, e.g. --where elements_per_H=64 V0_over_cs=1e-5")
+    flutter = read_flutter(args.flutter)
+    styles = styles_for({r["category"] for r in rows})
+    fs = sorted({r["f"] for r in rows})
+    f_lo, f_hi = min(fs) - 0.1, max(fs) + 0.1
+
+    # 2. Flutter wedge: beyond the plot where unbounded, broken where absent.
+    fig, ax = _style.plt.subplots(figsize=(7.4, 4.8))
+    nu_w, lower, upper = flutter.T
+    upper_drawn = np.where(np.isposinf(upper), f_hi + 10.0, upper)
+    ax.fill_between(nu_w, lower, upper_drawn, where=np.isfinite(lower), color="0.85", alpha=0.6,
+                    lw=0, zorder=0)
+    ax.plot(nu_w, lower, "k-.", lw=1.2, zorder=1)
+    ax.plot(nu_w, upper_drawn, "k-.", lw=1.2, zorder=1)
+
+    # 3. One marker per run, by category.
+    handles, labels = [], []
+    counts = Counter(r["category"] for r in rows)
+    for category, (label, layers) in styles.items():
+        chosen = [r for r in rows if r["category"] == category]
+        if not chosen:
+            continue
+        nu = [r["nu"] for r in chosen]
+        f = [r["f"] for r in chosen]
+        for layer in layers:
+            ax.plot(nu, f, ls="none", zorder=3, **layer)
+        handles.append(tuple(Line2D([], [], ls="none", **layer) for layer in layers))
+        labels.append(f"{label} ({counts[category]})")
+    handles.append(Line2D([], [], color="k", ls="-.", lw=1.2))
+    labels.append("flutter of steady sliding (theory):\nunstable inside the shaded wedge")
+    ax.legend(handles, labels, handler_map={tuple: HandlerTuple(ndivide=1)}, loc="upper left",
+              bbox_to_anchor=(1.01, 1.0), frameon=False, labelspacing=1.0)
+
+    # 4. Axes.
+    nus = sorted({r["nu"] for r in rows})
+    ax.set_xlim(min(nus + [nu_w.min()]) - 0.02, max(nus + [nu_w.max()]) + 0.02)
+    ax.set_ylim(f_lo, f_hi)
+    ax.set_xticks(nus)
+    ax.set_yticks(fs)
+    ax.tick_params(axis="both", labelsize=8)
+    ax.grid(alpha=0.25)
+    ax.set_xlabel("Poisson's ratio $\\nu$ (-)")
+    ax.set_ylabel("Coulomb friction coefficient $f$ (-)")
+    shared = _style.common_label(rows, skip=("nu", "f"))
+    ax.set_title(f"Sliding regimes of {len(rows)} runs in the ($\\nu$, $f$) plane"
+                 + (f"\n{shared}" if shared else ""))
+    _style.save(fig, args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    _style.cli(main)

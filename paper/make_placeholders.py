@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+"""Fill paper/generated/ with placeholders for whatever the pipeline has not produced yet, so that
+the report compiles before any run exists.
+
+    paper/make_placeholders.py [--force] [--dir paper/generated]
+
+Writes numbers.tex (every macro \\notavailable) and table1.tex (an empty table) when absent, or
+always with --force. Figures need no placeholder: reproduction.tex draws a framed note in place
+of a generated/<name>.pdf that does not exist. Existing generated files are never touched without
+--force.
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_numbers  # noqa: E402
+
+TABLE = """% Placeholder written by paper/make_placeholders.py: run make_table1.py on table1.csv.
+\\begin{tabular}{rrrrr}
+\\toprule
+ & & \\multicolumn{2}{c}{$c_p$ (m/s)} & deviation \\\\
+\\cmidrule(lr){3-4}
+$\\nu$ & $f$ & published & regenerated & (\\%) \\\\
+\\midrule
+\\multicolumn{5}{c}{\\notavailable{} (Table~1 not generated yet)} \\\\
+\\bottomrule
+\\end{tabular}
+"""
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser.add_argument("--dir", default=os.path.join(here, "generated"),
+                        help="folder of the generated files (default: paper/generated)")
+    parser.add_argument("--force", action="store_true", help="overwrite existing files")
+    args = parser.parse_args(argv)
+    os.makedirs(args.dir, exist_ok=True)
+    files = {"numbers.tex": make_numbers.render(make_numbers.all_macros(), []),
+             "table1.tex": TABLE}
+    for name, text in files.items():
+        path = os.path.join(args.dir, name)
+        if os.path.exists(path) and not args.force:
+            print(f"kept {path}")
+            continue
+        with open(path, "w") as stream:
+            stream.write(text)
+        print(f"wrote placeholder {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

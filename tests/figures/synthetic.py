@@ -1,0 +1,233 @@
+"""Small synthetic inputs that follow docs/contracts.md: a run.h5 with interface fields, global
+series and snapshots; all_metrics.csv, table1.csv, flutter.txt, metrics.json, summary.json.
+
+The fields look like the paper's nu=0.2, f=1.5 case (a pulse at c_p = 0.85 m/s that opens the
+interface and drops T/N below zero) so that the figures made from them can be judged by eye.
+`python3 tests/figures/synthetic.py DIR` writes them all to DIR.
+"""
+import csv
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+E, RHO, H = 1000.0, 1000.0, 25.0
+PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
+    (0.0, 1.5): 0.982, (0.0, 2.0): 1.213, (0.2, 1.5): 0.882, (0.2, 1.2): 0.875,
+    (0.3, 1.5): 0.774, (0.45, 1.0): -2.523, (0.45, 1.5): 0.656, (0.49, 0.5): -5.250,
+    (0.49, 2.0): 0.607, (0.4, 1.05): 0.825,
+}
+NUS = [0.0, 0.1, 0.2, 0.3, 0.4, 0.45, 0.49]
+FS = [0.5, 0.8, 0.9, 0.95, 1.0, 1.05, 1.1, 1.15, 1.2, 1.3, 1.4, 1.5, 1.8, 2.0]
+
+
+def speeds(nu):
+    c_s = math.sqrt(E / (2 * (1 + nu) * RHO))
+    c_l = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * RHO))
+    return c_s, c_l
+
+
+def _stamp(dataset, unit, description):
+    dataset.attrs["unit"] = unit
+    dataset.attrs["description"] = description
+
+
+def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_over_H=2.0,
+              c_p=0.85, format_version=1, snapshots=True, periodic_connectivity=False,
+              t_end=1200.0):
+    import h5py
+
+    c_s, c_l = speeds(nu)
+    lam, h = lambda_over_H * H, H / elements_per_H
+    dt = 0.5 / c_s
+    p0 = 0.001 * E * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
+    n_c = int(round(lam / h))
+    x = np.arange(n_c) * h
+    t = np.arange(0.0, t_end + 1e-9, 4 * dt)
+    onset = 740.0
+
+    # A pulse that wraps around the period, grows after onset and opens after t = 850 s.
+    xp = (10.0 + c_p * (t - onset))[:, None]
+    dist = (x[None, :] - xp + lam / 2) % lam - lam / 2
+    active = ((t > onset) & (t < 1100.0))[:, None]
+    slip_velocity = 0.02 * np.exp(-(dist / 3.0) ** 2) * active
+    grow = np.clip((t - 850.0) / 100.0, 0.0, 1.0)[:, None] * (t < 1100.0)[:, None]
+    opening = 0.01 * grow * np.exp(-((dist + 1.0) / 2.0) ** 2)
+    state = np.where(opening > 1e-4, 0, np.where(slip_velocity > 1e-3, 2, 1)).astype(np.int8)
+
+    tg = np.arange(0.0, t_end + 1e-9, dt)
+    rise = 0.95 * f + 0.05 * f * np.clip(tg / onset, 0.0, 1.0)
+    drop = np.where(tg > onset, (f + 0.3) * (1 - np.exp(-np.clip(tg - onset, 0, None) / 80.0)), 0)
+    t_over_n = rise - drop + np.where(tg > 1000.0, 0.001 * (tg - 1000.0), 0.0)
+    n_force = p0 * lam * np.ones_like(tg)
+
+    with h5py.File(path, "w") as file:
+        config = {"material": {"E": E, "nu": nu, "rho": RHO},
+                  "geometry": {"H": H, "lambda_over_H": lambda_over_H},
+                  "mesh": {"elements_per_H": elements_per_H, "integration": "reduced"},
+                  "loading": {"V0_over_cs": v0_over_cs}, "friction": {"f": f}}
+        attrs = dict(format_version=format_version, creator="slidewave",
+                     slidewave_version="0.0.0-test", git_commit="synthetic", call="synthetic",
+                     created_utc="2024-01-01T00:00:00Z", config=json.dumps(config), complete=1,
+                     end_reason="t_end", E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s, c_l=c_l,
+                     p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
+                     n_steps_done=len(tg) - 1, t_onset_estimate=onset, u_x_preshear=0.09)
+        attrs["lambda"] = lam
+        for key, value in attrs.items():
+            file.attrs[key] = value
+        file.create_dataset("/setup/config_input", data=json.dumps(config))
+        interface = {"x": (x, "m", "node positions"), "t": (t, "s", "output times"),
+                     "slip_velocity": (slip_velocity, "m/s", "slip rate"),
+                     "slip": (np.cumsum(slip_velocity, axis=0) * 4 * dt, "m", "slip"),
+                     "opening": (opening, "m", "u_y"),
+                     "normal_traction": (p0 * (1 - 5 * slip_velocity), "Pa", "pressure"),
+                     "tangential_traction": (f * p0 * np.ones_like(opening), "Pa", "traction"),
+                     "state": (state, "1", "0 open, 1 stick, 2 slip")}
+        for name, (data, unit, description) in interface.items():
+            _stamp(file.create_dataset(f"/interface/{name}", data=data), unit, description)
+        series = {"t": tg, "T": t_over_n * n_force, "N": n_force, "T_over_N": t_over_n,
+                  "energy_kinetic": 0 * tg, "energy_elastic": 0 * tg, "work_external": 0 * tg,
+                  "dissipation_friction": 0 * tg, "energy_balance_residual": 0 * tg,
+                  "contact_iterations": 0 * tg + 5, "contact_residual": 0 * tg + 1e-12}
+        for name, data in series.items():
+            _stamp(file.create_dataset(f"/global/{name}", data=data), "-", name)
+        if snapshots:
+            _write_snapshots(file, lam, h, elements_per_H, c_p, onset, periodic_connectivity)
+
+
+def _write_snapshots(file, lam, h, n_y, c_p, onset, periodic):
+    n_x = int(round(lam / h))
+    columns = n_x if periodic else n_x + 1  # periodic: the x = lambda column is x = 0
+    i, j = np.meshgrid(np.arange(columns), np.arange(n_y + 1), indexing="ij")
+    coordinates = np.column_stack([i.ravel() * h, j.ravel() * h])
+    node = lambda a, b: (a % columns) * (n_y + 1) + b  # noqa: E731
+    connectivity = np.array([[node(a, b), node(a + 1, b), node(a + 1, b + 1), node(a, b + 1)]
+                             for a in range(n_x) for b in range(n_y)])
+    _stamp(file.create_dataset("/snapshots/coordinates", data=coordinates), "m", "nodes")
+    _stamp(file.create_dataset("/snapshots/connectivity", data=connectivity), "1", "quads")
+    X, Y = coordinates[:, 0], coordinates[:, 1]
+    for k, time in enumerate([700.0, 840.0, 890.0, 960.0, 1010.0, 1077.0]):
+        xp = 10.0 + c_p * (time - onset)
+        dist = (X - xp + lam / 2) % lam - lam / 2
+        amplitude = 0.0 if time < onset else 1.0
+        pulse = amplitude * np.exp(-(dist / 4.0) ** 2 - Y / 10.0)
+        displacement = np.column_stack([0.09 * Y / H + 0.01 * pulse, 0.005 * pulse * (Y < h)])
+        displacement[:, 1] += -0.025 * Y / H
+        velocity = np.column_stack([0.02 * pulse, 0.008 * pulse * np.sin(dist / 3.0)])
+        group = file.create_group(f"/snapshots/{k:04d}")
+        group.attrs["t"] = time
+        _stamp(group.create_dataset("displacement", data=displacement), "m", "u")
+        _stamp(group.create_dataset("velocity", data=velocity), "m/s", "v")
+
+
+def category_of(nu, f):
+    c = PUBLISHED.get((nu, f))
+    if c is None:
+        return "no_opening" if f < 1.1 or nu > 0.4 else "intersonic_opening"
+    if c < 0:
+        return "supersonic_backward_opening"
+    if c > speeds(nu)[1]:
+        return "supersonic_forward_opening"
+    return "intersonic_opening_inversion" if f >= 1.3 else "intersonic_opening"
+
+
+def metrics_rows():
+    rows = []
+    base = dict(V0_over_cs=1e-5, lambda_over_H=2.0, elements_per_H=32, rho=1000.0,
+                integration="reduced")
+
+    def row(nu, f, **over):
+        c_s, c_l = speeds(nu)
+        r = dict(nu=nu, f=f, **base)
+        r.update(over)
+        published = PUBLISHED.get((nu, f), 1.3 * c_s)
+        scale = 1.0 + 0.02 * math.sin(7 * nu + 3 * f) + 0.01 * math.log2(r["elements_per_H"] / 32)
+        celerity = published * scale
+        category = category_of(nu, f)
+        opening = category != "no_opening"
+        count = max(1, round(r["lambda_over_H"] * H / (2 * H * math.sqrt(
+            max(celerity ** 2 / c_s ** 2 - 1, 0.25)))))
+        r.update(onset_time=700.0 + 300 * nu, celerity=celerity,
+                 regime="supersonic" if abs(celerity) > c_l else "intersonic",
+                 opening=opening, max_opening=0.01 if opening else 1e-13,
+                 min_T_over_N=-0.3 if "inversion" in category else 0.6, inversion=("inversion" in
+                                                                                category),
+                 category=category, pulse_count=count,
+                 pulse_spacing=r["lambda_over_H"] * H / count,
+                 energy_balance_error=1e-4 * (1 + nu), c_s=c_s, E=E, H=H,
+                 dt=0.5 / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json")
+        return r
+
+    rows += [row(nu, f) for nu in NUS for f in FS]
+    rows += [row(0.2, 1.5, lambda_over_H=lh) for lh in (4.0, 6.0)]
+    rows += [row(0.2, 1.5, elements_per_H=n) for n in (16, 64, 128)]
+    rows += [row(0.2, 1.5, rho=r) for r in (0.1, 10.0)]
+    rows += [row(0.2, 1.5, V0_over_cs=v) for v in (1e-6, 5e-6, 5e-5, 1e-4)]
+    return rows
+
+
+def write_csv(path, rows, drop=()):
+    columns = [c for c in rows[0] if c not in drop]
+    with open(path, "w", newline="") as stream:
+        writer = csv.DictWriter(stream, fieldnames=columns, extrasaction="ignore")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def table1_rows():
+    """Like `analysis aggregate`'s table1.csv: one row per published cell (here PUBLISHED)."""
+    rows = []
+    for (nu, f), published in sorted(PUBLISHED.items()):
+        c_s, c_l = speeds(nu)
+        regenerated = None if (nu, f) == (0.49, 2.0) else published * (1 + 0.03 * math.cos(5 * nu + f))
+        regime = lambda c: "supersonic" if abs(c) > c_l else "intersonic"  # noqa: E731
+        row = dict(nu=nu, f=f, celerity=regenerated, published=published, deviation_rel=None,
+                   regime=None, published_regime=regime(published), sign_match=None,
+                   regime_match=None, within_tol=None, category=category_of(nu, f))
+        if regenerated is not None:
+            deviation = (regenerated - published) / abs(published)
+            row.update(deviation_rel=deviation, regime=regime(regenerated),
+                       sign_match=regenerated * published > 0,
+                       regime_match=regime(regenerated) == regime(published),
+                       within_tol=abs(deviation) <= 0.05)
+        else:
+            row["category"] = None
+        if (nu, f) == (0.3, 1.5):  # one regime mismatch, as a real table may have
+            row.update(regime="subsonic", regime_match=False)
+        rows.append(row)
+    return rows
+
+
+FLUTTER = """# nu f_lower f_upper
+0.0 1.00 inf
+0.1 1.00 inf
+0.2 1.02 5.0
+0.3 1.08 2.6
+0.35 1.20 1.9
+0.4 nan nan
+0.45 nan nan
+"""
+
+
+def write_all(folder):
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    write_run(folder / "run.h5")
+    for v in (1e-6, 1e-4):
+        write_run(folder / f"run_v{v:g}.h5", v0_over_cs=v, snapshots=False)
+    write_csv(folder / "all_metrics.csv", metrics_rows())
+    write_csv(folder / "table1.csv", table1_rows())
+    (folder / "flutter.txt").write_text(FLUTTER)
+    (folder / "metrics.json").write_text(json.dumps(
+        {"celerity": 0.85, "celerity_window": [800.0, 1000.0], "regime": "intersonic"}))
+    (folder / "summary.json").write_text(json.dumps(  # keys of `analysis aggregate`
+        {"cells_total": 38, "cells_compared": 36, "cells_missing": 2, "within_tolerance": 21,
+         "sign_matches": 35, "regime_matches": 34, "median_abs_deviation": 0.041,
+         "max_abs_deviation": 0.19, "tolerance": 0.05, "missing_cells": ["nu=0.49 f=2"]}))
+    return folder
+
+
+if __name__ == "__main__":
+    print(write_all(sys.argv[1] if len(sys.argv) > 1 else "synthetic"))

@@ -1,0 +1,123 @@
+"""paper/: numbers and table generated from the study files, placeholders, and the LaTeX build
+(with placeholders only, and with every figure the report expects)."""
+import re
+import shutil
+import subprocess
+
+import pytest
+
+from figure_support import PAPER, command
+
+LATEXMK = shutil.which("latexmk")
+needs_latex = pytest.mark.skipif(LATEXMK is None, reason="latexmk not installed "
+                                 "(apt-get install --no-install-recommends latexmk "
+                                 "texlive-latex-recommended)")
+
+
+def macros(path):
+    return dict(re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", path.read_text()))
+
+
+def expected_figures():
+    names = re.findall(r"\\generatedfigure\{([\w]+)\}", (PAPER / "reproduction.tex").read_text())
+    assert len(names) == 15
+    make = (PAPER / "Makefile").read_text()
+    listed = re.search(r"FIGURES = (.*?)\n\n", make, re.S).group(1).replace("\\", " ").split()
+    assert sorted(listed) == sorted(names), "Makefile FIGURES and reproduction.tex disagree"
+    return names
+
+
+def test_numbers_from_the_study(data, tmp_path):
+    out = tmp_path / "numbers.tex"
+    result = command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
+                     "--table1", data / "table1.csv", "-o", out)
+    assert result.returncode == 0, result.stderr
+    m = macros(out)
+    assert m["cellsTotal"] == r"\ensuremath{38}"
+    assert m["cellsCompared"] == r"\ensuremath{36}"
+    assert m["cellsWithin"] == r"\ensuremath{21}"
+    assert m["dtTimesCs"] == r"\ensuremath{0.5}"
+    assert m["tolerancePercent"] == r"\ensuremath{5}"
+    assert m["medianDeviationPercent"] == r"\ensuremath{4.1}"
+    assert m["nGridPoints"] == r"\ensuremath{98}"
+    assert m["publishedReference"] == r"\ensuremath{0.882}"
+    assert m["pulseCountsPeriod"].count("ensuremath") == 3
+    assert m["nSupersonicBackward"] == r"\ensuremath{2}"
+    used = set(re.findall(r"\\(\w+)", (PAPER / "reproduction.tex").read_text()))
+    assert "notavailable" not in "".join(m[k] for k in m if k in used)
+
+
+def test_numbers_placeholders_and_bad_input(tmp_path):
+    result = command(PAPER / "make_numbers.py", "-o", tmp_path / "n.tex")
+    assert result.returncode == 0
+    assert macros(tmp_path / "n.tex")["cellsWithin"] == r"\notavailable"
+    (tmp_path / "m.csv").write_text("nu,f\n0.2,1.5\n")
+    result = command(PAPER / "make_numbers.py", tmp_path / "s.json", "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "cannot read" in result.stderr
+    (tmp_path / "s.json").write_text("{}")
+    result = command(PAPER / "make_numbers.py", tmp_path / "s.json", tmp_path / "m.csv",
+                     "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "missing required column(s) category" in result.stderr
+
+
+def test_table1(data, tmp_path):
+    out = tmp_path / "table1.tex"
+    assert command(PAPER / "make_table1.py", data / "table1.csv", "-o", out).returncode == 0
+    text = out.read_text()
+    assert text.count(r"\\") - 2 == 10  # one row per published cell (+ two header lines)
+    assert r"0.2 & 1.5 & $0.882$" in text and r"\mathbf" in text
+    assert r"0.49 & 2 & $0.607$ & -- & --" in text
+    assert r"$\mathbf{-3.0}$$^\ddagger$ & subsonic" in text  # the regime mismatch at (0.3, 1.5)
+    (tmp_path / "bad.csv").write_text("nu,f,celerity\n0.2,1.5,0.8\n")
+    result = command(PAPER / "make_table1.py", tmp_path / "bad.csv", "-o", out)
+    assert result.returncode == 2 and "missing required column(s) published" in result.stderr
+
+
+def test_placeholders_never_overwrite(tmp_path):
+    (tmp_path / "numbers.tex").write_text("real")
+    result = command(PAPER / "make_placeholders.py", "--dir", tmp_path)
+    assert result.returncode == 0
+    assert (tmp_path / "numbers.tex").read_text() == "real"
+    assert "notavailable" in (tmp_path / "table1.tex").read_text()
+
+
+def build(paper):
+    result = subprocess.run(["make", "-C", str(paper)], capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-2000:]
+    assert (paper / "reproduction.pdf").stat().st_size > 20_000
+    log = (paper / "reproduction.log").read_text(errors="replace")
+    assert "undefined" not in log.lower(), "undefined references or macros"
+    return log
+
+
+@needs_latex
+def test_report_builds_with_placeholders(tmp_path):
+    paper = tmp_path / "paper"
+    shutil.copytree(PAPER, paper, ignore=shutil.ignore_patterns("generated", "*.pdf", "*.aux"))
+    build(paper)
+    assert (paper / "generated" / "numbers.tex").exists()
+
+
+@needs_latex
+def test_report_builds_with_every_figure(data, rendered, tmp_path):
+    paper = tmp_path / "paper"
+    shutil.copytree(PAPER, paper, ignore=shutil.ignore_patterns("generated", "*.pdf", "*.aux"))
+    gen = paper / "generated"
+    gen.mkdir()
+    assert sorted(rendered) == sorted(expected_figures())
+    for name, (status, prefix) in rendered.items():
+        assert status == 0, name
+        for ext in ("png", "pdf"):
+            shutil.copy(f"{prefix}.{ext}", gen / f"{name}.{ext}")
+    assert command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
+                   "--table1", data / "table1.csv", "-o", gen / "numbers.tex").returncode == 0
+    assert command(PAPER / "make_table1.py", data / "table1.csv",
+                   "-o", gen / "table1.tex").returncode == 0
+    build(paper)
+    missing = subprocess.run(["make", "-s", "-C", str(paper), "missing"], capture_output=True,
+                             text=True)
+    assert missing.stdout.strip() == ""
+    if shutil.which("pdftotext"):
+        text = subprocess.run(["pdftotext", str(paper / "reproduction.pdf"), "-"],
+                              capture_output=True, text=True).stdout
+        assert "not generated yet" not in text and "n/a" not in text
