@@ -1,7 +1,7 @@
 // Per-step cost of slidewave runs: split into predictor, free solve, contact, correction and
 // diagnostics, steps/s, and the ratio of one step to one CHOLMOD solve on the same factor.
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2] [--t-end 1300]
-//                                      [--nu 0.2] [--f 1.5]
+//                                      [--nu 0.2] [--f 1.5] [--solver circulant|cholmod]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "time/hht.hpp"
@@ -24,11 +23,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 double one_solve_seconds(const slidewave::LayerModel& model) {
   const slidewave::HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
   const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * model.M_ff + (1 - hht.alpha) * model.K_ff;
-  const slidewave::SparseCholesky factor(K_eff);
-  Eigen::VectorXd b = Eigen::VectorXd::Ones(model.n_free);
+  const auto factor = model.factorize(K_eff);
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(model.n_free), x(model.n_free);
   const int repeats = 200;
   const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < repeats; ++i) b = factor.solve(b) + Eigen::VectorXd::Ones(model.n_free);
+  for (int i = 0; i < repeats; ++i) {
+    factor->solve_into(b, x);
+    b = x + Eigen::VectorXd::Ones(model.n_free);
+  }
   return seconds_since(start) / repeats;
 }
 
@@ -37,6 +39,7 @@ double one_solve_seconds(const slidewave::LayerModel& model) {
 int main(int argc, char** argv) {
   std::vector<int> resolutions;
   double lambda_over_H = 2, t_end = 1300, nu = 0.2, f = 1.5;
+  auto solver = slidewave::LinearSolverKind::circulant;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -49,14 +52,18 @@ int main(int argc, char** argv) {
       nu = std::atof(argv[++i]);
     } else if (a == "--f" && i + 1 < argc) {
       f = std::atof(argv[++i]);
+    } else if (a == "--solver" && i + 1 < argc) {
+      const std::string kind = argv[++i];
+      solver = kind == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::circulant;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F] [--solver circulant|cholmod]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
 
-  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), one core\n", nu, f, lambda_over_H, t_end);
+  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), linear solver %s, one core\n", nu, f, lambda_over_H,
+              t_end, solver == slidewave::LinearSolverKind::cholmod ? "cholmod" : "circulant");
   std::printf("%6s %8s %9s | %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s\n", "H/h", "n_dofs", "steps", "predict",
               "free_slv", "contact", "correct", "diagnost", "ms/step", "steps/s", "1solve_ms", "step/slv",
               "setup_s");
@@ -67,6 +74,7 @@ int main(int argc, char** argv) {
     config.material.nu = nu;
     config.friction.f = f;
     config.time.t_end = t_end;
+    config.numerics.linear_solver = solver;
     const slidewave::LayerModel model(config);
     slidewave::StepProfile profile;
     const auto start = std::chrono::steady_clock::now();

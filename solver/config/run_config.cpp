@@ -125,6 +125,8 @@ const std::map<std::string, ContactWeighting> kWeighting{{"alpha", ContactWeight
                                                          {"end", ContactWeighting::end}};
 const std::map<std::string, Regularization> kRegularization{{"none", Regularization::none},
                                                             {"prakash_clifton", Regularization::prakash_clifton}};
+const std::map<std::string, LinearSolverKind> kLinearSolver{{"circulant", LinearSolverKind::circulant},
+                                                             {"cholmod", LinearSolverKind::cholmod}};
 const std::map<std::string, ProgressMode> kProgress{
     {"auto", ProgressMode::automatic}, {"always", ProgressMode::always}, {"never", ProgressMode::never}};
 
@@ -146,12 +148,12 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   RunConfig c;
   constexpr double inf = std::numeric_limits<double>::infinity();
   const std::vector<std::string> groups{"material", "geometry", "mesh", "loading", "friction",
-                                        "time", "contact", "perturbation", "output"};
+                                        "time", "contact", "perturbation", "numerics", "output"};
   for (const auto& [key, _] : input.items()) {
     bool known = false;
     for (const auto& g : groups) known = known || g == key;
     if (!known) problems.push_back(key + ": unknown group; allowed " + "material, geometry, mesh, loading, "
-                                   "friction, time, contact, perturbation, output");
+                                   "friction, time, contact, perturbation, numerics, output");
   }
 
   GroupReader material(input, "material", problems);
@@ -202,6 +204,10 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   perturbation.number("amplitude", c.perturbation.amplitude, 0, 1, false, false, "0 <= amplitude <= 1");
   perturbation.integer("seed", c.perturbation.seed, 0, std::numeric_limits<long long>::max(), "integer >= 0");
   perturbation.reject_unknown();
+
+  GroupReader numerics(input, "numerics", problems);
+  numerics.choice("linear_solver", c.numerics.linear_solver, kLinearSolver);
+  numerics.reject_unknown();
 
   GroupReader output(input, "output", problems);
   output.integer("interface_stride", c.output.interface_stride, 1, 1000000, "integer >= 1");
@@ -273,6 +279,7 @@ nlohmann::json RunConfig::to_json() const {
                                                               : nlohmann::json(nullptr)}};
   j["contact"] = {{"tolerance", contact.tolerance}, {"max_iterations", contact.max_iterations}};
   j["perturbation"] = {{"amplitude", perturbation.amplitude}, {"seed", perturbation.seed}};
+  j["numerics"] = {{"linear_solver", name_of(kLinearSolver, numerics.linear_solver)}};
   j["output"] = {{"interface_stride", output.interface_stride},
                  {"snapshot_times", output.snapshot_times},
                  {"progress", name_of(kProgress, output.progress)}};

@@ -2,14 +2,31 @@
 
 namespace slidewave {
 
-Condensation condense_on_contact(const SparseCholesky& K_eff, int n_contact_dofs) {
-  Eigen::MatrixXd Ct = Eigen::MatrixXd::Zero(K_eff.size(), n_contact_dofs);
-  for (int c = 0; c < n_contact_dofs; ++c) Ct(c, c) = 1;
-  Condensation out;
-  out.Z = K_eff.solve(Ct);
-  out.W = out.Z.topRows(n_contact_dofs);
-  out.W = 0.5 * (out.W + out.W.transpose()).eval();  // exact symmetry (round-off of the solves)
-  return out;
+Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs) {
+  Eigen::MatrixXd W(n_contact_dofs, n_contact_dofs);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(K_eff.size()), z(K_eff.size());
+  for (int c = 0; c < n_contact_dofs; ++c) {
+    e(c) = 1;
+    K_eff.solve_into(e, z);
+    W.col(c) = z.head(n_contact_dofs);
+    e(c) = 0;
+  }
+  return 0.5 * (W + W.transpose());
+}
+
+Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_contact_nodes) {
+  const int n = n_contact_nodes;
+  Eigen::MatrixXd W(2 * n, 2 * n);
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(K_eff.size()), z(K_eff.size());
+  for (int b = 0; b < 2; ++b) {
+    e(b) = 1;
+    K_eff.solve_into(e, z);
+    e(b) = 0;
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < n; ++k)
+        for (int a = 0; a < 2; ++a) W(2 * i + a, 2 * k + b) = z(2 * (((i - k) % n + n) % n) + a);
+  }
+  return 0.5 * (W + W.transpose());
 }
 
 }  // namespace slidewave

@@ -4,16 +4,19 @@
 // C selects the contact DOFs, which are the first n_c free DOFs in the mesh numbering.
 #include <Eigen/Dense>
 
-#include "linalg/sparse_cholesky.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace slidewave {
 
-struct Condensation {
-  Eigen::MatrixXd Z;  ///< response of all free DOFs to unit contact forces
-  Eigen::MatrixXd W;  ///< Delassus operator, symmetric positive definite
-};
-
+/// W by n_c solves (any mesh). Symmetrized to remove the round-off of the solves.
 /// @param n_contact_dofs number of leading free DOFs that are contact DOFs
-Condensation condense_on_contact(const SparseCholesky& K_eff, int n_contact_dofs);
+Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs);
+
+/// W by 2 solves, for an operator that is invariant under the periodic shift of the mesh by one column
+/// (every uniform periodic layer): the response at contact node i to a unit load at contact node k is
+/// the response at node i - k (mod n_x) to the load at node 0, so
+///     W(2i + a, 2k + b) = [K_eff^{-1} e_{b}](2 ((i - k) mod n_x) + a).
+/// Equal to delassus_operator() to round-off (tested).
+Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_contact_nodes);
 
 }  // namespace slidewave

@@ -29,6 +29,7 @@ struct Blocks {
 /// slice by slice, so an entry of slice 0 that a later slice lacks is caught by a visit stamp.
 std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, Blocks* out) {
   std::ostringstream why;
+  why.precision(17);
   if (n_x < 3 || n_y < 1) {
     why << "need n_x >= 3 and n_y >= 1 (got n_x = " << n_x << ", n_y = " << n_y << ")";
     return why.str();
@@ -95,8 +96,9 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
       }
     for (const Position& q : significant)
       if (stamp[at(q.b, q.r, q.c)] != i) {
-        why << "column slice " << i << " lacks the entry (" << q.r << ", " << q.c << ") of block B_"
-            << q.b - 1 << " = " << blocks.B[q.b](q.r, q.c) << " of slice 0";
+        why << "column slice " << i << " lacks the entry (" << q.r << ", " << q.c << ") of block "
+            << (q.b == 0 ? "B_{-1}" : q.b == 1 ? "B_0" : "B_{+1}") << " = " << blocks.B[q.b](q.r, q.c)
+            << " of slice 0";
         return why.str();
       }
   }
@@ -154,13 +156,14 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   p_ = std::max(blocks.bandwidth, 1);  // p = 0 (diagonal blocks) runs through the same code
   const int s = s_, p = p_, lanes = lanes_;
 
-  // 2. L D L^H of A(theta_m) for every m, band by band (row-oriented, Golub & Van Loan alg. 4.3.5
+  // 2. L D L^H of A(theta_m) for every m, band by band (row-oriented band LDL^T of Golub & Van Loan sec. 4.3
   //    transcribed to Hermitian matrices), then stored m-fastest for the vectorized sweeps.
   L_re_.assign(static_cast<std::size_t>(s + p) * p * lanes, 0.0);
   L_im_.assign(L_re_.size(), 0.0);
   inv_D_.assign(static_cast<std::size_t>(s) * lanes, 0.0);
   using Complex = std::complex<double>;
-  std::vector<Complex> band(static_cast<std::size_t>(s) * (p + 1));  // band[r (p+1) + k] = A(r, r-k), then L
+  std::vector<Complex> band(static_cast<std::size_t>(s) * (p + 1));
+  const auto entry = [&band, p](int r, int c) -> Complex& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
   std::vector<double> D(s);
   for (int m = 0; m < n_modes_; ++m) {
     // e^{i theta} exactly real at m = 0 and at the Nyquist mode, so that their imaginary parts vanish.
@@ -168,20 +171,18 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
                           : 2 * m == n_x ? Complex(-1, 0)
                                          : std::polar(1.0, 2 * kPi * m / n_x);
     for (int r = 0; r < s; ++r)
-      for (int k = 0; k <= p; ++k) {
-        const int c = r - k;
-        band[r * (p + 1) + k] =
-            c < 0 ? Complex(0) : blocks.B[1](r, c) + blocks.B[2](r, c) * phase + blocks.B[0](r, c) * std::conj(phase);
-      }
+      for (int c = std::max(0, r - p); c <= r; ++c)
+        entry(r, c) = blocks.B[1](r, c) + blocks.B[2](r, c) * phase + blocks.B[0](r, c) * std::conj(phase);
+    // Overwrite the band with L (strictly lower part) row by row; D apart.
     for (int r = 0; r < s; ++r) {
       const int first = std::max(0, r - p);
       for (int c = first; c < r; ++c) {
-        Complex v = band[r * (p + 1) + (r - c)];
-        for (int q = first; q < c; ++q) v -= band[r * (p + 1) + (r - q)] * D[q] * std::conj(band[c * (p + 1) + (c - q)]);
-        band[r * (p + 1) + (r - c)] = v / D[c];
+        Complex v = entry(r, c);
+        for (int q = first; q < c; ++q) v -= entry(r, q) * D[q] * std::conj(entry(c, q));
+        entry(r, c) = v / D[c];
       }
-      double d = band[r * (p + 1)].real();
-      for (int q = first; q < r; ++q) d -= std::norm(band[r * (p + 1) + (r - q)]) * D[q];
+      double d = entry(r, r).real();
+      for (int q = first; q < r; ++q) d -= std::norm(entry(r, q)) * D[q];
       if (!(d > 0) || !std::isfinite(d)) {
         std::ostringstream msg;
         msg << "BlockCirculantSolver: A(theta) is not positive definite at wavenumber m = " << m << " (pivot "
@@ -192,8 +193,8 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
       inv_D_[static_cast<std::size_t>(r) * lanes + m] = 1.0 / (n_x * d);
       for (int k = 1; k <= p && k <= r; ++k) {
         const std::size_t at = (static_cast<std::size_t>(r) * p + k - 1) * lanes + m;
-        L_re_[at] = band[r * (p + 1) + k].real();
-        L_im_[at] = band[r * (p + 1) + k].imag();
+        L_re_[at] = entry(r, r - k).real();
+        L_im_[at] = entry(r, r - k).imag();
       }
     }
   }
@@ -206,8 +207,10 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p) * lanes;
   plans_ = std::make_unique<FftPlans>();
   std::vector<double> data(static_cast<std::size_t>(size()), 0.0);
-  // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED.
-  const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED;
+  // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED. ESTIMATE
+  // and NO_SIMD make the plan a function of the sizes alone: no timing, no dependence on the CPU's vector
+  // extensions (FFTW's real-data codelets are scalar for the sizes here, so this costs little).
+  const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED | FFTW_NO_SIMD;
   {
     std::lock_guard<std::mutex> lock(planner_mutex());
     const fftw_iodim forward_dim{n_x, 2, 1};

@@ -21,11 +21,10 @@
 // blocks of slice 0 are the ones factorized.
 //
 // Thread safety: solve() writes a mutable workspace, so one object must not be used by two threads at
-// once (give each thread its own copy of the object's inputs and build one solver per thread).
-// Construction (FFTW planning) is serialized internally and may run in any thread.
+// once; build one solver per thread. Construction (FFTW planning) is serialized internally.
 //
-// Reproducibility: the FFTs are planned with FFTW_ESTIMATE, so the plan, and hence the round-off, does
-// not depend on timing; it may depend on the SIMD extensions of the CPU that runs the program.
+// Reproducibility: the FFT plans are made with FFTW_ESTIMATE | FFTW_NO_SIMD, so they depend on the sizes
+// alone (not on timing or on the CPU's vector extensions), and a solve is bitwise repeatable.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <cstddef>
@@ -33,9 +32,11 @@
 #include <string>
 #include <vector>
 
+#include "linalg/linear_solver.hpp"
+
 namespace slidewave {
 
-class BlockCirculantSolver {
+class BlockCirculantSolver : public LinearSolver {
  public:
   /// Checks the structure (std::invalid_argument with the first mismatch if A is not square of size
   /// 2 n_x n_y, symmetric and block-circulant with nearest-neighbour coupling; n_x >= 3, n_y >= 1) and
@@ -53,9 +54,9 @@ class BlockCirculantSolver {
   /// X = A^{-1} B, column by column through the same workspace (no allocation per column).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
   /// x = A^{-1} b without allocating; b and x may be the same vector. Both have size() entries.
-  void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const;
+  void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const override;
 
-  int size() const { return 2 * n_x_ * n_y_; }
+  int size() const override { return 2 * n_x_ * n_y_; }
   int n_x() const { return n_x_; }
   int n_y() const { return n_y_; }
   /// Half-bandwidth p of the blocks in the slice ordering r = 2 j + d.

@@ -13,10 +13,9 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A)
     throw std::runtime_error("CHOLMOD factorization failed: the matrix is not positive definite");
 }
 
-Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
-  Eigen::VectorXd x = llt_->solve(b);
+void SparseCholesky::solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const {
+  x = llt_->solve(Eigen::VectorXd(b));
   if (llt_->info() != Eigen::Success) throw std::runtime_error("CHOLMOD solve failed");
-  return x;
 }
 
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& B) const {

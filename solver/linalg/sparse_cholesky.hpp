@@ -7,14 +7,17 @@
 #include <Eigen/Sparse>
 #include <memory>
 
+#include "linalg/linear_solver.hpp"
+
 namespace slidewave {
 
-class SparseCholesky {
+class SparseCholesky : public LinearSolver {
  public:
   explicit SparseCholesky(const Eigen::SparseMatrix<double>& A);
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  using LinearSolver::solve;
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-  int size() const { return n_; }
+  void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const override;
+  int size() const override { return n_; }
 
  private:
   int n_;

@@ -7,6 +7,7 @@
 #include "contact/delassus.hpp"
 #include "contact/gauss_seidel.hpp"
 #include "fem/assembly.hpp"
+#include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
 
 namespace slidewave {
@@ -22,7 +23,14 @@ LayerModel::LayerModel(const RunConfig& c)
   M_ff = M.topLeftCorner(n_free, n_free);
   M_ff_rows = M_ff;
   K_fd = K.topRightCorner(n_free, n_top);
+  M_fd = M.topRightCorner(n_free, n_top);
   M_top_rows = M.bottomRows(n_top);
+}
+
+std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {
+  if (config.numerics.linear_solver == LinearSolverKind::circulant)
+    return std::make_unique<BlockCirculantSolver>(A, mesh.n_x, mesh.n_y);
+  return std::make_unique<SparseCholesky>(A);
 }
 
 Eigen::VectorXd LayerModel::top_displacement(double u_x, double u_y) const {
@@ -47,22 +55,24 @@ double sum_every_other(const Eigen::VectorXd& r, int offset) {
 PreloadState solve_preload(const LayerModel& model) {
   const auto& c = model.config;
   const int n_c = model.n_contact_dofs;
-  const SparseCholesky K_static(model.K_ff);
-  const Condensation cond = condense_on_contact(K_static, n_c);
+  const auto K_static = model.factorize(model.K_ff);
+  const Eigen::MatrixXd W = delassus_operator_periodic(*K_static, model.mesh.n_contact());
   GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
 
   // Quasi-static contact solve: K_ff u_f = -K_fd u_d + C^T r; local slip measured from u_x_before.
   const auto solve_static = [&](const Eigen::VectorXd& u_d, const Eigen::VectorXd& u_contact_before,
                                 Eigen::VectorXd& r, std::vector<ContactState>& state, int& iterations) {
-    const Eigen::VectorXd u_free = K_static.solve(Eigen::VectorXd(-model.K_fd * u_d));
+    Eigen::VectorXd rhs = -(model.K_fd * u_d);
+    const Eigen::VectorXd u_free = K_static->solve(rhs);
     Eigen::VectorXd q = u_free.head(n_c);
     for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
     Eigen::VectorXd y;
-    const auto report = solve_contact_gauss_seidel(cond.W, q, c.friction.f, {}, settings, r, y, state);
+    const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, y, state);
     if (!report.converged) throw std::runtime_error("preload: the quasi-static contact solve did not converge");
     iterations += report.iterations;
     Eigen::VectorXd u(model.n_free + model.n_top);
-    u.head(model.n_free) = u_free + cond.Z * r;
+    rhs.head(n_c) += r;
+    u.head(model.n_free) = K_static->solve(rhs);
     u.tail(model.n_top) = u_d;
     return u;
   };
@@ -82,8 +92,8 @@ PreloadState solve_preload(const LayerModel& model) {
   // Stage 2: while all nodes stick, the reactions are linear in the top shear U:
   // r(U) = r1 + U r_unit with W r_unit = -(free contact displacement of a unit shear). Solve for the U
   // that gives T/N = preshear_ratio * f, then verify with the full contact law.
-  const Eigen::VectorXd q_unit = K_static.solve(Eigen::VectorXd(-model.K_fd * model.top_displacement(1, 0))).head(n_c);
-  const Eigen::VectorXd r_unit = -cond.W.ldlt().solve(q_unit);
+  const Eigen::VectorXd q_unit = K_static->solve(Eigen::VectorXd(-(model.K_fd * model.top_displacement(1, 0)))).head(n_c);
+  const Eigen::VectorXd r_unit = -W.ldlt().solve(q_unit);
   const double target = c.loading.preshear_ratio * c.friction.f;
   const double T1 = -sum_every_other(r1, 0), N1 = sum_every_other(r1, 1);
   const double Tu = -sum_every_other(r_unit, 0), Nu = sum_every_other(r_unit, 1);

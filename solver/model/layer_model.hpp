@@ -3,10 +3,12 @@
 // numbered first) and top DOFs (row j = n_y, displacement-controlled), and the quasi-static stages.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <memory>
 #include <vector>
 
 #include "config/run_config.hpp"
 #include "contact/coulomb_local.hpp"
+#include "linalg/linear_solver.hpp"
 #include "mesh/layer_mesh.hpp"
 
 namespace slidewave {
@@ -22,8 +24,11 @@ struct LayerModel {
   LayerMesh mesh;
   RowSparseMatrix K, M;                    ///< all DOFs
   Eigen::SparseMatrix<double> K_ff, M_ff;  ///< free-free blocks (to factorize)
-  RowSparseMatrix M_ff_rows, K_fd, M_top_rows;
+  RowSparseMatrix M_ff_rows, K_fd, M_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
+
+  /// Factorizes a free-free matrix (K_ff, M_ff, K_eff) with the configured linear solver.
+  std::unique_ptr<LinearSolver> factorize(const Eigen::SparseMatrix<double>& A) const;
 
   /// Top DOF values for shear u_x and compression u_y.
   Eigen::VectorXd top_displacement(double u_x, double u_y) const;

@@ -6,7 +6,6 @@
 
 #include "contact/delassus.hpp"
 #include "contact/gauss_seidel.hpp"
-#include "linalg/sparse_cholesky.hpp"
 #include "time/hht.hpp"
 
 namespace slidewave {
@@ -104,8 +103,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const double w = alpha_weighted ? 1 - a : 1.0;        // weight of r(n+1)
   const double w_previous = alpha_weighted ? a : 0.0;   // weight of r(n)
   const Eigen::SparseMatrix<double> K_eff_matrix = hht.mass_factor() * m.M_ff + (1 - a) * m.K_ff;
-  const SparseCholesky K_eff(K_eff_matrix);
-  const Eigen::MatrixXd W = w * condense_on_contact(K_eff, n_c).W;
+  const auto K_eff = m.factorize(K_eff_matrix);
+  const Eigen::MatrixXd W = w * delassus_operator_periodic(*K_eff, n_nodes_c);
 
   // 2. Initial state: the preload, plus the seeded perturbation that breaks translation invariance.
   //    The normal DOFs of the contact nodes are not perturbed (no initial gap or penetration).
@@ -126,7 +125,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   {  // consistent initial acceleration: M_ff a_f = C^T r - (K u)_f
     Eigen::VectorXd rhs = -Ku.head(n_f);
     rhs.head(n_c) += r;
-    acc.head(n_f) = SparseCholesky(m.M_ff).solve(rhs);
+    acc.head(n_f) = m.factorize(m.M_ff)->solve(rhs);
   }
   const Eigen::VectorXd u_contact_start = u.head(n_c);
   const double u_y_top = c.loading.Uy_over_H * d.H;
@@ -139,10 +138,19 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     bounds.resize(n_nodes_c);
   }
 
-  // 3. Diagnostics at t = 0.
+  // 3. Mass products of the free rows, M_ff u, M_ff v, M_ff a, carried through the step by the Newmark
+  //    relations and the equation of motion (M_ff a(n+1) follows from K u, K u(n) and the contact forces),
+  //    so that K u is the only full sparse product of a step. The top velocity is the constant V0.
+  Eigen::VectorXd Mu_f = m.M_ff_rows * u.head(n_f), Mv_f = m.M_ff_rows * v.head(n_f);
+  Eigen::VectorXd Ma_f = -Ku.head(n_f);
+  Ma_f.head(n_c) += r;
+  const Eigen::VectorXd M_fd_v_top = m.M_fd * v.tail(n_t);
+  const double kinetic_top = v.tail(n_t).dot(m.M.bottomRightCorner(n_t, n_t) * v.tail(n_t));
+  const auto kinetic = [&]() { return 0.5 * (v.head(n_f).dot(Mv_f + 2 * M_fd_v_top) + kinetic_top); };
+
+  // 4. Diagnostics at t = 0.
   Eigen::VectorXd F_top = Ku.tail(n_t) + m.M_top_rows * acc;
-  const auto kinetic = [&](const Eigen::VectorXd& vel) { return 0.5 * vel.dot(m.M * vel); };
-  const double energy_start = kinetic(v) + 0.5 * u.dot(Ku);
+  const double energy_start = kinetic() + 0.5 * u.dot(Ku);
   double work_external = 0, dissipation = 0, work_normal = 0;
   auto& g = rec.global;
   const auto record_global = [&](double t, int iterations, double residual) {
@@ -151,7 +159,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       T -= r(2 * k);
       N += r(2 * k + 1);
     }
-    const double e_kin = kinetic(v), e_el = 0.5 * u.dot(Ku);
+    const double e_kin = kinetic(), e_el = 0.5 * u.dot(Ku);
     g.t.push_back(t);
     g.T.push_back(T);
     g.N.push_back(N);
@@ -186,7 +194,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   watch.lap(&StepProfile::setup);
 
-  // 4. Time loop.
+  // 5. Time loop.
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, d.p0 * d.h};
   const double threshold_open = opening_threshold(c);
   double t_end = c.time.t_end;
@@ -195,7 +203,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   rec.complete = true;
   auto wall_last = std::chrono::steady_clock::now();
   int steps_since_report = 0;
-  Eigen::VectorXd u_tilde(n_f), rhs(n_f), q(n_c), y(n_c), r_new(n_c);
+  Eigen::VectorXd u_tilde(n_f), Mu_tilde(n_f), rhs(n_f), u_free(n_f), q(n_c), y(n_c), r_new(n_c), Ku_next(n_f + n_t),
+      Ma_next(n_f);
   for (int step = 1; step <= n_steps_max; ++step) {
     const double t = step * dt;
     if (t > t_end + 0.5 * dt) break;  // stop_after_opening shortened the run
@@ -208,12 +217,13 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
     // Predictor and free solve.
     u_tilde = u.head(n_f) + dt * v.head(n_f) + dt * dt * (0.5 - hht.beta) * acc.head(n_f);
-    rhs.noalias() = hht.mass_factor() * (m.M_ff_rows * u_tilde);
+    Mu_tilde = Mu_f + dt * Mv_f + dt * dt * (0.5 - hht.beta) * Ma_f;
+    rhs.noalias() = hht.mass_factor() * Mu_tilde;
     rhs.noalias() -= (1 - a) * (m.K_fd * u_d);
     rhs.noalias() -= a * Ku.head(n_f);
     if (w_previous != 0) rhs.head(n_c) += w_previous * r;
     watch.lap(&StepProfile::predictor);
-    const Eigen::VectorXd u_free = K_eff.solve(rhs);
+    K_eff->solve_into(rhs, u_free);
     watch.lap(&StepProfile::free_solve);
 
     // Contact: y = (du_x, u_y) at the contact nodes.
@@ -235,7 +245,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     // Correction, Newmark update, diagnostics.
     rhs.head(n_c) += w * r_new;
     Eigen::VectorXd u_next(n_f + n_t);
-    u_next.head(n_f) = K_eff.solve(rhs);
+    K_eff->solve_into(rhs, u_next.head(n_f));
     u_next.tail(n_t) = u_d;
     const Eigen::VectorXd acc_f_next = hht.mass_factor() * (u_next.head(n_f) - u_tilde);
     v.head(n_f) += dt * ((1 - hht.gamma) * acc.head(n_f) + hht.gamma * acc_f_next);
@@ -254,9 +264,15 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       }
     const Eigen::VectorXd u_contact_prev = u.head(n_c);
     const Eigen::VectorXd u_top_prev = u.tail(n_t);
+    Ku_next.noalias() = m.K * u_next;
+    Ma_next = -(1 - a) * Ku_next.head(n_f) - a * Ku.head(n_f);
+    Ma_next.head(n_c) += w * r_new + w_previous * r;
+    Mv_f += dt * ((1 - hht.gamma) * Ma_f + hht.gamma * Ma_next);
+    Mu_f = Mu_tilde + hht.beta * dt * dt * Ma_next;
+    Ma_f = Ma_next;
     u = u_next;
     r = r_new;
-    Ku = m.K * u;
+    Ku.swap(Ku_next);
     const Eigen::VectorXd F_top_next = Ku.tail(n_t) + m.M_top_rows * acc;
     work_external += 0.5 * (F_top + F_top_next).dot(u_d - u_top_prev);
     F_top = F_top_next;
