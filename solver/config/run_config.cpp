@@ -103,10 +103,12 @@ class GroupReader {
   /// Call after all keys of the group were read: any other key is an error.
   void reject_unknown() {
     if (!node_) return;
+    std::string allowed;
+    for (const auto& s : seen_) allowed += (allowed.empty() ? "" : ", ") + s;
     for (const auto& [key, _] : node_->items()) {
       bool known = false;
       for (const auto& s : seen_) known = known || s == key;
-      if (!known) problems_.push_back(name(key) + ": unknown key");
+      if (!known) problems_.push_back(name(key) + ": unknown key; allowed " + allowed);
     }
   }
 
@@ -174,7 +176,7 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   mesh.reject_unknown();
 
   GroupReader loading(input, "loading", problems);
-  loading.number("Uy_over_H", c.loading.Uy_over_H, -0.1, 0, false, true, "-0.1 <= Uy_over_H < 0");
+  loading.number("Uy_over_H", c.loading.Uy_over_H, -0.1, 0, true, true, "-0.1 < Uy_over_H < 0");
   loading.number("preshear_ratio", c.loading.preshear_ratio, 0, 1, false, true, "0 <= preshear_ratio < 1");
   loading.number("V0_over_cs", c.loading.V0_over_cs, 0, 0.1, true, false, "0 < V0_over_cs <= 0.1");
   loading.reject_unknown();
@@ -201,7 +203,7 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   contact.reject_unknown();
 
   GroupReader perturbation(input, "perturbation", problems);
-  perturbation.number("amplitude", c.perturbation.amplitude, 0, 1, false, false, "0 <= amplitude <= 1");
+  perturbation.number("amplitude", c.perturbation.amplitude, 0, inf, false, true, "amplitude >= 0");
   perturbation.integer("seed", c.perturbation.seed, 0, std::numeric_limits<long long>::max(), "integer >= 0");
   perturbation.reject_unknown();
 

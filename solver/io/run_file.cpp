@@ -238,15 +238,16 @@ void write_run_file(const std::string& path, const RunConfig& config, const RunR
     std::remove(temporary.c_str());
     throw;
   }
-  if (!rec.snapshots.empty()) {
-    const std::string xdmf = xdmf_path_for(path);
-    write_xdmf(xdmf + ".tmp", base_name(path), rec);
-    std::rename((xdmf + ".tmp").c_str(), xdmf.c_str());
-  }
+  // The sidecar goes into place only after run.h5 did, so it never points at a missing file.
+  const std::string xdmf = xdmf_path_for(path);
+  if (!rec.snapshots.empty()) write_xdmf(xdmf + ".tmp", base_name(path), rec);
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     std::remove(temporary.c_str());
+    std::remove((xdmf + ".tmp").c_str());
     throw std::runtime_error("cannot rename " + temporary + " to " + path);
   }
+  if (!rec.snapshots.empty() && std::rename((xdmf + ".tmp").c_str(), xdmf.c_str()) != 0)
+    throw std::runtime_error("cannot rename " + xdmf + ".tmp to " + xdmf);
 }
 
 }  // namespace slidewave

@@ -103,8 +103,10 @@ PreloadState solve_preload(const LayerModel& model) {
   s.T = -sum_every_other(s.r, 0);
   s.N = sum_every_other(s.r, 1);
 
+  // Frictionless (f = 0): "stick" is not defined (any round-off of r_x is a slip), so only closure is required.
+  const bool frictionless = c.friction.f == 0;
   for (size_t k = 0; k < s.state.size(); ++k)
-    if (s.state[k] != ContactState::stick) {
+    if (s.state[k] == ContactState::open || (!frictionless && s.state[k] != ContactState::stick)) {
       std::ostringstream msg;
       msg << "preload: contact node " << k << " is not in stick after stage 2 (state "
           << static_cast<int>(s.state[k]) << "); the preload must leave the interface all-closed, all-stick";

@@ -45,7 +45,7 @@ struct PreloadState {
 };
 
 /// Solves stages 1 and 2 through the same contact law as the dynamics (slip measured from the
-/// previous stage). Throws if the final state is not all-closed, all-stick.
+/// previous stage). Throws if the final state is not all-closed, all-stick (all-closed if f = 0).
 PreloadState solve_preload(const LayerModel& model);
 
 }  // namespace slidewave
