@@ -58,7 +58,10 @@ def _compare(args: argparse.Namespace) -> int:
     from analysis.reference import read_reference
 
     result = compare(read_table(args.table), read_reference(args.reference), args.tolerance,
-                     args.min_within)
+                     args.min_within, ratchet=args.ratchet,
+                     known_mismatches=tuple(args.known_mismatch or ()))
+    for note in result.notes:
+        print(note)
     for failure in result.failures:
         print(failure)
     print(result.summary())
@@ -121,6 +124,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="relative tolerance (default %(default)g)")
     p.add_argument("--min-within", type=int, default=0,
                    help="fail when fewer cells are within tolerance (default %(default)s)")
+    p.add_argument("--ratchet", action="store_true",
+                   help="CI gate: out-of-tolerance cells are notes; wrong sign or regime, or fewer than "
+                        "--min-within cells within tolerance, fail")
+    p.add_argument("--known-mismatch", action="append", metavar='"nu=N f=F"',
+                   help="a cell whose wrong sign or regime is recorded (with its explanation) in the "
+                        "ratchet file; reported, not failed (repeatable)")
     p.set_defaults(handler=_compare)
 
     p = commands.add_parser("flutter-boundary",

@@ -5,6 +5,10 @@ published one, or when |celerity - published| / |published| exceeds the toleranc
 fails when fewer than `min_within` cells are within tolerance (so that an empty table cannot pass
 when something is required of it). Deviations are recomputed from the reference; the table's own
 `published` and `deviation_rel` columns are not trusted.
+
+Ratchet mode (`ratchet=True`, the CI gate of the pipeline): a cell out of tolerance is reported but is
+not a failure; a wrong sign or a wrong regime (subsonic / intersonic / supersonic) is, and so is a
+count of cells within tolerance below `min_within` (the ratchet in study/reference/ratchet.json).
 """
 
 from __future__ import annotations
@@ -14,8 +18,10 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from analysis import theory
 from analysis.errors import InputError
 from analysis.reference import ReferenceCell, cell_key
+from analysis.regime import regime
 
 
 @dataclass(frozen=True)
@@ -23,6 +29,7 @@ class Comparison:
     """Outcome: failures (one message per failing cell), counts and whether the check passed."""
 
     failures: list[str]
+    notes: list[str]
     compared: int
     within: int
     sign_matches: int
@@ -68,7 +75,8 @@ def read_table(path: str | Path) -> dict[tuple[float, float], float]:
 
 
 def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCell],
-            tolerance: float, min_within: int = 0) -> Comparison:
+            tolerance: float, min_within: int = 0, ratchet: bool = False,
+            known_mismatches: tuple[str, ...] = ()) -> Comparison:
     """Compare every published cell that the table measures.
 
     Parameters
@@ -81,12 +89,18 @@ def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCe
         Relative tolerance (> 0).
     min_within
         Fewest cells that must be within tolerance (>= 0).
+    ratchet
+        Cells out of tolerance become notes; wrong sign or regime still fail (module docstring).
+    known_mismatches
+        Cells ("nu=0.49 f=1.5", as printed) whose wrong sign or regime is recorded in the ratchet
+        file with its explanation: reported as KNOWN notes instead of failures, so that only a new
+        mismatch fails the gate.
     """
     if not tolerance > 0:
         raise InputError(f"--tolerance must be > 0 (got {tolerance})")
     if min_within < 0:
         raise InputError(f"--min-within must be >= 0 (got {min_within})")
-    failures = []
+    failures, notes = [], []
     compared = within = signs = missing = 0
     for cell in reference:
         c = table.get(cell.key, math.nan)
@@ -95,14 +109,21 @@ def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCe
             continue
         compared += 1
         deviation = (c - cell.celerity) / abs(cell.celerity)
-        where = f"nu={cell.nu:g} f={cell.f:g}: celerity {c:.4f} m/s vs published {cell.celerity:.3f} m/s"
+        name = f"nu={cell.nu:g} f={cell.f:g}"
+        where = f"{name}: celerity {c:.4f} m/s vs published {cell.celerity:.3f} m/s"
+        mismatches = notes if name in known_mismatches else failures
+        prefix = "KNOWN " if name in known_mismatches else ""
         if (c > 0) != (cell.celerity > 0):
-            failures.append(f"WRONG SIGN {where}")
+            mismatches.append(f"{prefix}WRONG SIGN {where}")
             continue
         signs += 1
+        c_s, _, c_l = theory.wave_speeds(cell.nu)
+        if ratchet and regime(c, c_s, c_l) != cell.regime:
+            mismatches.append(f"{prefix}WRONG REGIME {where} ({regime(c, c_s, c_l)} vs {cell.regime})")
+            continue
         if abs(deviation) <= tolerance:
             within += 1
         else:
-            failures.append(f"OUT OF TOLERANCE {where} ({100 * deviation:+.1f}%, "
-                            f"tolerance {100 * tolerance:g}%)")
-    return Comparison(failures, compared, within, signs, missing, min_within, tolerance)
+            (notes if ratchet else failures).append(
+                f"OUT OF TOLERANCE {where} ({100 * deviation:+.1f}%, tolerance {100 * tolerance:g}%)")
+    return Comparison(failures, notes, compared, within, signs, missing, min_within, tolerance)

@@ -179,3 +179,33 @@ def test_table1_tex_compiles(tmp_path):
     result = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "doc.tex"],
                             cwd=out, capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stdout[-2000:]
+
+
+def test_compare_ratchet_mode_fails_only_on_sign_regime_or_count():
+    from analysis.compare import compare
+    from analysis.reference import ReferenceCell
+
+    reference = [ReferenceCell(0.2, 1.5, 0.882), ReferenceCell(0.45, 1.0, -2.523), ReferenceCell(0.0, 1.5, 0.982)]
+    # 10 % off, but right sign and regime: a note in ratchet mode, a failure otherwise.
+    table = {(0.2, 1.5): 0.97, (0.45, 1.0): -2.52, (0.0, 1.5): 0.98}
+    strict = compare(table, reference, 0.05)
+    gate = compare(table, reference, 0.05, min_within=2, ratchet=True)
+    assert not strict.passed and gate.passed and len(gate.notes) == 1
+    assert not compare(table, reference, 0.05, min_within=3, ratchet=True).passed  # below the ratchet
+    # Right sign, wrong regime: 0.6 m/s is subsonic at nu = 0.2 (c_s = 0.645).
+    wrong_regime = compare({**table, (0.2, 1.5): 0.6}, reference, 0.05, ratchet=True)
+    assert not wrong_regime.passed and "WRONG REGIME" in wrong_regime.failures[0]
+    wrong_sign = compare({**table, (0.45, 1.0): 2.5}, reference, 0.05, ratchet=True)
+    assert not wrong_sign.passed and "WRONG SIGN" in wrong_sign.failures[0]
+
+
+def test_compare_known_mismatch_is_a_note_but_a_new_one_fails():
+    from analysis.compare import compare
+    from analysis.reference import ReferenceCell
+
+    reference = [ReferenceCell(0.49, 1.5, -5.399), ReferenceCell(0.2, 1.5, 0.882)]
+    table = {(0.49, 1.5): 0.747, (0.2, 1.5): 0.88}
+    gate = compare(table, reference, 0.05, ratchet=True, known_mismatches=("nu=0.49 f=1.5",))
+    assert gate.passed and any(n.startswith("KNOWN WRONG SIGN") for n in gate.notes)
+    new = compare({**table, (0.2, 1.5): -0.88}, reference, 0.05, ratchet=True, known_mismatches=("nu=0.49 f=1.5",))
+    assert not new.passed and new.failures == [f for f in new.failures if "nu=0.2 f=1.5" in f]

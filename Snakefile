@@ -1,0 +1,66 @@
+# slidewave: regenerate the parametric study of Yastrebov (2016).
+#
+#   snakemake -c2                 the default study `quick` (a few minutes)
+#   snakemake -c2 all             every sweep of the paper, figures, report, paper PDF
+#   snakemake -c2 <sweep>         one sweep (table1, shear_rate, period, mesh, density, long,
+#                                 snapshots, quick, ci, table1_ci) with its table and figures
+#   snakemake -c2 reference_check Table 1 at H/32 against the published values (CI)
+#
+# Wiring only: the study is declared in study/config.yaml (schema study/config.schema.yaml), the
+# rules live in study/rules/*.smk, the logic in study/*.py. See study/README.md.
+
+import os
+import sys
+
+from snakemake.utils import min_version, validate
+
+min_version("7.21")
+sys.path.insert(0, workflow.basedir)
+from study.sweeps import typed_numbers
+
+configfile: os.path.join(workflow.basedir, "study/config.yaml")
+config.update(typed_numbers(config))  # --config passes nested numbers as strings
+validate(config, "study/config.schema.yaml")
+
+# Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary.
+PYTHON = os.environ.get("SLIDEWAVE_PYTHON", "/usr/bin/python3")
+SOLVER = os.environ.get("SLIDEWAVE_BIN", "build/slidewave")
+
+include: "study/rules/common.smk"
+include: "study/rules/simulate.smk"
+include: "study/rules/tables.smk"
+include: "study/rules/figures.smk"
+include: "study/rules/report.smk"
+
+
+rule quick:
+    """The default study: one point per category at H/32, its table, figures and report."""
+    default_target: True
+    input: lambda wc: sweep_products("quick")
+
+
+rule all:
+    """The paper: every sweep of `study`, the figures, the study report and the paper PDF."""
+    input:
+        lambda wc: study_files(sweep_products),
+        "results/report.html",
+        PAPER_PDF,
+
+
+rule figures:
+    """Every figure of the sweeps in `study`."""
+    input: lambda wc: study_files(figure_files)
+
+
+rule phase_diagram:
+    """Fig. 4a: categories in (nu, f) with the flutter wedge."""
+    input: figure("table1", "phase_diagram")
+
+
+# One target per sweep, named like the sweep (`snakemake table1`, `snakemake ci`, ...).
+for _sweep in config["sweeps"]:
+    if _sweep == "quick":  # defined above, as the default target
+        continue
+    rule:
+        name: _sweep
+        input: lambda wc, sweep=_sweep: sweep_products(sweep)

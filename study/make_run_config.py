@@ -1,0 +1,77 @@
+"""Write one run's solver configuration (docs/contracts.md, section 1) from a point of the study.
+
+    /usr/bin/python3 -m study.make_run_config --spec SPEC_JSON -o results/<sweep>/<point>/config.json
+
+SPEC_JSON (built by the Snakefile from the validated study config) holds
+`point` (study/sweeps.py POINT_KEYS), `model` (E, H, Uy_over_H, preshear_ratio), `run_length`
+(duration_transits, stop_after_opening_transits, t_end), `snapshot_offsets_transits` (bulk snapshots,
+in transit times after the onset estimate) and `solver` (extra solver keys, merged last; they may not
+redefine a key set here).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from study.run_length import run_length
+
+
+def _merge_new_keys(base: dict, extra: dict, path: str = "") -> None:
+    """Adds the keys of `extra` to `base` (recursively); a key that `base` already sets is an error."""
+    for key, value in extra.items():
+        where = f"{path}{key}"
+        if isinstance(value, dict) and isinstance(base.get(key), dict):
+            _merge_new_keys(base[key], value, where + ".")
+        elif key in base:
+            raise ValueError(f"solver override {where} redefines a value the study sets; "
+                             "change the point, the model or the run_length instead")
+        else:
+            base[key] = value
+
+
+def run_config(spec: dict) -> dict:
+    """The solver configuration of one point (a dict ready for json.dump)."""
+    point, model, length = spec["point"], spec["model"], spec["run_length"]
+    times = run_length(E=model["E"], nu=point["nu"], rho=point["rho"], H=model["H"], f=point["f"],
+                       Uy_over_H=model["Uy_over_H"], preshear_ratio=model["preshear_ratio"],
+                       V0_over_cs=point["V0_over_cs"], duration_transits=length["duration_transits"],
+                       stop_after_opening_transits=length.get("stop_after_opening_transits"),
+                       t_end=length.get("t_end"))
+    snapshots = sorted(times.t_onset_estimate + offset * times.transit_time
+                       for offset in spec.get("snapshot_offsets_transits", []))
+    if snapshots and (snapshots[0] < 0 or snapshots[-1] > times.t_end):
+        raise ValueError(f"snapshot times {snapshots} fall outside [0, t_end = {times.t_end}]")
+    config = {
+        "material": {"E": model["E"], "nu": point["nu"], "rho": point["rho"]},
+        "geometry": {"H": model["H"], "lambda_over_H": point["lambda_over_H"]},
+        "mesh": {"elements_per_H": point["elements_per_H"], "integration": point["integration"]},
+        "loading": {"Uy_over_H": model["Uy_over_H"], "preshear_ratio": model["preshear_ratio"],
+                    "V0_over_cs": point["V0_over_cs"]},
+        "friction": {"f": point["f"]},
+        "time": {"t_end": times.t_end, "stop_after_opening": times.stop_after_opening},
+        "perturbation": {"seed": point["seed"]},
+    }
+    if snapshots:
+        config["output"] = {"snapshot_times": snapshots}
+    _merge_new_keys(config, spec.get("solver", {}))
+    return config
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--spec", required=True, help="the point's specification (JSON text)")
+    parser.add_argument("-o", "--output", required=True, type=Path, help="config.json to write")
+    args = parser.parse_args(argv)
+    config = run_config(json.loads(args.spec))
+    args.output.parent.mkdir(parents=True, exist_ok=True)
+    args.output.write_text(json.dumps(config, indent=2) + "\n")
+    print(f"wrote {args.output}: t_end = {config['time']['t_end']:.1f} s, "
+          f"stop_after_opening = {config['time']['stop_after_opening']}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

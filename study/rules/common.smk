@@ -1,0 +1,191 @@
+# Look-ups shared by the rules: the points of a sweep, each run's specification and resources, and
+# the files each sweep's target builds. The logic lives in study/*.py (tested in tests/pipeline/).
+
+import functools
+import json
+import shlex
+from pathlib import Path
+
+REPO = Path(workflow.basedir).resolve()  # on sys.path (the Snakefile's folder)
+from study import resources as study_resources
+from study import sweeps as study_sweeps
+from study.make_run_config import run_config
+
+# Scripts run as `-m study.*`, `-m analysis` and figures/*.py import from the repository root,
+# also when --directory puts the results elsewhere.
+os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, [str(REPO), os.environ.get("PYTHONPATH")]))
+
+wildcard_constraints:
+    sweep="[A-Za-z][A-Za-z0-9_]*",
+    point="nu[^/]+",
+    field="slip_velocity|opening|state",
+
+FIGURE_EXTS = (".png", ".pdf")
+# figures/convergence.py --param accepts these point parameters.
+CONVERGENCE_PARAMS = ("elements_per_H", "rho", "V0_over_cs")
+
+
+def repo_path(path):
+    """A path of the study config (relative to the repository root) as an absolute path."""
+    return str(REPO / path)
+
+
+@functools.lru_cache(maxsize=None)
+def points(sweep):
+    """{name: point} of one sweep (study/sweeps.py)."""
+    return study_sweeps.sweep_points(config, sweep, REPO)
+
+
+def sweep_spec(sweep):
+    return config["sweeps"][sweep]
+
+
+def run_dir(sweep, point):
+    return f"results/{sweep}/{point}"
+
+
+def run_files(sweep, filename, names=None):
+    """results/<sweep>/<point>/<filename> for the given (default: all) points of a sweep."""
+    return [f"{run_dir(sweep, name)}/{filename}" for name in (names or points(sweep))]
+
+
+def _deep_merge(base, extra):
+    merged = dict(base)
+    for key, value in extra.items():
+        merged[key] = _deep_merge(merged[key], value) if isinstance(value, dict) and isinstance(merged.get(key), dict) else value
+    return merged
+
+
+def run_spec(sweep, point):
+    """Everything study/make_run_config.py needs to write one config.json."""
+    spec = sweep_spec(sweep)
+    return {
+        "point": points(sweep)[point],
+        "model": config["model"],
+        "run_length": {**config["run_length"], **spec.get("run_length", {})},
+        "solver": _deep_merge(config["solver"], spec.get("solver", {})),
+        "snapshot_offsets_transits": spec.get("snapshot_offsets_transits", []),
+    }
+
+
+@functools.lru_cache(maxsize=None)
+def run_estimate(sweep, point):
+    """Scheduler resources of one run (study/resources.py), from its mesh and simulated time."""
+    spec = run_spec(sweep, point)
+    p, time = spec["point"], run_config(spec)["time"]
+    steps = study_resources.n_steps(E=spec["model"]["E"], nu=p["nu"], rho=p["rho"], t_end=time["t_end"],
+                                    dt_times_cs=time.get("dt_times_cs", 0.5), dt=time.get("dt"))
+    return study_resources.estimate(elements_per_H=p["elements_per_H"], lambda_over_H=p["lambda_over_H"],
+                                    steps=steps)
+
+
+def figure(sweep, stem):
+    """results/<sweep>/figures/<stem>.png and .pdf."""
+    return [f"results/{sweep}/figures/{stem}{ext}" for ext in FIGURE_EXTS]
+
+
+def map_points(sweep):
+    """Points drawn as space-time maps: those matching `maps.points` (default: all)."""
+    wanted = sweep_spec(sweep).get("maps", {}).get("points")
+    if wanted is None:
+        return list(points(sweep))
+    return [study_sweeps.find_point(points(sweep), match, f"sweeps.{sweep}.maps.points") for match in wanted]
+
+
+def figure_files(sweep):
+    """Every figure (PNG and PDF) that a sweep's `products` ask for."""
+    spec = sweep_spec(sweep)
+    files = []
+    for kind in spec.get("products", []):
+        if kind in ("phase_diagram", "celerity_vs_nu", "tn_curves", "pulse_spacing", "convergence"):
+            files += figure(sweep, kind)
+        elif kind == "spacetime":
+            for field in spec.get("maps", {}).get("fields", ["state"]):
+                for name in map_points(sweep):
+                    files += figure(sweep, f"spacetime_{field}_{name}")
+        elif kind == "snapshots":
+            for name in points(sweep):
+                files += figure(sweep, f"snapshots_{name}")
+    return files
+
+
+def table_files(sweep):
+    """What `python3 -m analysis aggregate` writes for one sweep."""
+    directory = f"results/{sweep}/table"
+    return [f"{directory}/{name}" for name in
+            ("table1.csv", "table1.md", "table1.tex", "summary.json", "all_metrics.csv")]
+
+
+def sweep_products(sweep, with_report=True):
+    """The files of one sweep's target: table, comparison, figures and report as declared."""
+    products = sweep_spec(sweep).get("products", [])
+    files = table_files(sweep) + figure_files(sweep)
+    if "comparison" in products:
+        files.append(f"results/{sweep}/table/comparison.txt")
+    if with_report and "report" in products:
+        files.append(f"results/{sweep}/report.html")
+    return files
+
+
+def study_files(files_of):
+    """files_of(sweep) for every sweep of `study` (what `all` covers), as one list."""
+    return [path for sweep in config["study"] for path in files_of(sweep)]
+
+
+def table_select(pts, highlight=None):
+    """`--select KEY=VALUE ...` so that at most one run falls on each (nu, f) cell of Table 1: every
+    other parameter that varies across the points takes the `highlight` point's value, else the
+    study default (e.g. the shear-rate sweep's table is the V0/c_s = 1e-5 run)."""
+    keys = [k for k in study_sweeps.varying_keys(pts) if k not in ("nu", "f")]
+    wanted = {**config["defaults"], **(highlight or {})}
+    return " ".join(f"--select {k}={wanted[k]}" for k in keys)
+
+
+def has_default_run_settings(sweep):
+    """True when a sweep runs its points with the study-wide run length, solver keys and no snapshots."""
+    spec = sweep_spec(sweep)
+    return (not spec.get("snapshot_offsets_transits") and not spec.get("solver")
+            and all(spec.get("run_length", {}).get(k, v) == v for k, v in config["run_length"].items()))
+
+
+def study_points():
+    """{name: (sweep, point)} of the `study` sweeps with default run settings, each run once (the
+    first sweep that declares a point owns it; the same point elsewhere is the same computation)."""
+    unique = {}
+    for sweep in config["study"]:
+        if has_default_run_settings(sweep):
+            for name, point in points(sweep).items():
+                unique.setdefault(name, (sweep, point))
+    return unique
+
+
+def tn_labels(sweep):
+    """Legend texts of a sweep's T/N curves: the parameters that vary across it, shell-quoted."""
+    pts = points(sweep)
+    keys = study_sweeps.varying_keys(pts)
+    return " ".join(shlex.quote(study_sweeps.label(p, keys)) for p in pts.values())
+
+
+def tn_highlight(sweep):
+    """`--highlight INDEX` for the sweep's `highlight` point, or nothing."""
+    match = sweep_spec(sweep).get("highlight")
+    if match is None:
+        return ""
+    name = study_sweeps.find_point(points(sweep), match, f"sweeps.{sweep}.highlight")
+    return f"--highlight {list(points(sweep)).index(name)}"
+
+
+def convergence_param(sweep):
+    """The one parameter a convergence sweep varies (elements_per_H, rho or V0_over_cs)."""
+    keys = study_sweeps.varying_keys(points(sweep))
+    if len(keys) != 1 or keys[0] not in CONVERGENCE_PARAMS:
+        raise ValueError(f"sweeps.{sweep}: a convergence plot needs exactly one of {CONVERGENCE_PARAMS} "
+                         f"to vary, found {keys}")
+    return keys[0]
+
+
+def flutter_nu():
+    """Poisson's ratios at which the flutter boundary is evaluated (evenly spaced, `theory`)."""
+    theory = config["theory"]
+    lo, hi, n = theory["flutter_nu_min"], theory["flutter_nu_max"], theory["flutter_nu_count"]
+    return [lo + i * (hi - lo) / (n - 1) for i in range(n)]

@@ -1,0 +1,101 @@
+# Study reports (our own HTML: Snakemake 7.21's --report needs internet) and the LaTeX paper.
+
+localrules: sweep_report, report, paper_figure, paper_numbers, paper
+
+
+def report_inputs(sweeps):
+    """Everything a report shows: tables, comparisons, PNG figures, and each run's files."""
+    files = [repo_path("study/scripts/report.py")]
+    for sweep in sweeps:
+        files += [f for f in sweep_products(sweep, with_report=False) if not f.endswith(".pdf")]
+        for name in ("config.json", "metrics.json", "logs/simulate.benchmark.tsv"):
+            files += run_files(sweep, name)
+    return files
+
+
+def report_manifest(title, sweeps):
+    """The manifest study/scripts/report.py reads (JSON text)."""
+    sections = []
+    for sweep in sweeps:
+        products = sweep_spec(sweep).get("products", [])
+        sections.append({
+            "sweep": sweep,
+            "description": sweep_spec(sweep).get("description", ""),
+            "table": f"results/{sweep}/table/table1.csv",
+            "cells": sorted({(p["nu"], p["f"]) for p in points(sweep).values()}),
+            "comparison": f"results/{sweep}/table/comparison.txt" if "comparison" in products else None,
+            "figures": [f for f in figure_files(sweep) if f.endswith(".png")],
+            "runs": [{"name": name, "dir": run_dir(sweep, name)} for name in points(sweep)],
+        })
+    return json.dumps({"title": title, "tolerance": config["reference"]["tolerance"], "sections": sections})
+
+
+rule sweep_report:
+    """One sweep's HTML summary (product `report`)."""
+    input: lambda wc: report_inputs([wc.sweep])
+    output: "results/{sweep}/report.html"
+    params: manifest=lambda wc: report_manifest(f"slidewave: sweep {wc.sweep}", [wc.sweep])
+    log: "results/{sweep}/logs/report.log"
+    shell: "{PYTHON} {REPO}/study/scripts/report.py --manifest {params.manifest:q} --out {output} > {log} 2>&1"
+
+
+rule report:
+    """The study's HTML summary: every sweep of `study` (snakemake report)."""
+    input: lambda wc: report_inputs(config["study"])
+    output: "results/report.html"
+    params: manifest=lambda wc: report_manifest("slidewave: reproduction of Yastrebov (2016)", config["study"])
+    log: "logs/report.log"
+    shell: "{PYTHON} {REPO}/study/scripts/report.py --manifest {params.manifest:q} --out {output} > {log} 2>&1"
+
+
+PAPER_PDF = "paper/reproduction.pdf"
+
+
+def paper_figure_source(wildcards):
+    """The results PDF that paper/generated/<name>.pdf copies (config `paper.figures`)."""
+    entry = config["paper"]["figures"][wildcards.name]
+    stem = entry["figure"]
+    if "match" in entry:
+        stem += "_" + study_sweeps.find_point(points(entry["sweep"]), entry["match"], f"paper.figures.{wildcards.name}")
+    return f"results/{entry['sweep']}/figures/{stem}.pdf"
+
+
+rule paper_figure:
+    """A figure of the paper: a copy of the sweep's figure under the name reproduction.tex uses."""
+    input: paper_figure_source
+    output: "paper/generated/{name}.pdf"
+    wildcard_constraints: name="|".join(config["paper"]["figures"]) or "no-figure"
+    log: "logs/paper_figure_{name}.log"
+    shell: "cp {input} {output} 2> {log}"
+
+
+rule paper_numbers:
+    """Every number the paper quotes (paper/make_numbers.py) and its Table 1 (paper/make_table1.py)."""
+    input:
+        numbers_script="paper/make_numbers.py",
+        table_script="paper/make_table1.py",
+        summary="results/study/table/summary.json",
+        metrics="results/study/table/all_metrics.csv",
+        table="results/study/table/table1.csv",
+    output:
+        numbers="paper/generated/numbers.tex",
+        table="paper/generated/table1.tex",
+    params: tolerance=config["reference"]["tolerance"]
+    log: "logs/paper_numbers.log"
+    shell:
+        "({PYTHON} {input.numbers_script} {input.summary} {input.metrics} --table1 {input.table}"
+        " -o {output.numbers} && {PYTHON} {input.table_script} {input.table} -o {output.table}"
+        " --tolerance {params.tolerance}) > {log} 2>&1"
+
+
+rule paper:
+    """The LaTeX reproduction report (paper/reproduction.tex): every number, table and figure from
+    generated files. Built in the checkout (paper/ is not copied under --directory)."""
+    input:
+        tex="paper/reproduction.tex",
+        numbers="paper/generated/numbers.tex",
+        table="paper/generated/table1.tex",
+        figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
+    output: PAPER_PDF
+    log: "logs/paper.log"
+    shell: "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex} > {log} 2>&1"

@@ -1,0 +1,51 @@
+# One run: configure -> simulate -> measure, in results/<sweep>/<point>/ (logs in its logs/).
+
+localrules: configure
+
+if "SLIDEWAVE_BIN" not in os.environ:
+    SOLVER_SOURCES = sorted(str(p.relative_to(REPO)) for p in (REPO / "solver").rglob("*") if p.is_file())
+
+    rule build_solver:
+        """Build the solver CLI (Release) when a source is newer than the binary."""
+        input:
+            "CMakeLists.txt",
+            "cmake/git_version.cmake",
+            SOLVER_SOURCES,
+        output: "build/slidewave"
+        log: "logs/build_solver.log"
+        threads: 2
+        shell:
+            "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release"
+            " && cmake --build build --target slidewave -j{threads}) > {log} 2>&1"
+
+
+rule configure:
+    """Write the solver configuration of one point (study/make_run_config.py)."""
+    output: "results/{sweep}/{point}/config.json"
+    params: spec=lambda wc: json.dumps(run_spec(wc.sweep, wc.point), sort_keys=True)
+    log: "results/{sweep}/{point}/logs/configure.log"
+    shell: "{PYTHON} -m study.make_run_config --spec {params.spec:q} -o {output} 2> {log}"
+
+
+rule simulate:
+    """`slidewave run`: stages 1-3 of one point, interface fields and global series in run.h5."""
+    input:
+        config="results/{sweep}/{point}/config.json",
+        solver=SOLVER,
+    output: "results/{sweep}/{point}/run.h5"
+    log: "results/{sweep}/{point}/logs/simulate.log"
+    benchmark: "results/{sweep}/{point}/logs/simulate.benchmark.tsv"
+    threads: 1
+    resources:
+        mem_mb=lambda wc: run_estimate(wc.sweep, wc.point)["mem_mb"],
+        runtime=lambda wc: run_estimate(wc.sweep, wc.point)["runtime"],
+    shell: "{input.solver} run {input.config} -o {output} --threads {threads} > {log} 2>&1"
+
+
+rule measure:
+    """`python3 -m analysis measure`: onset, celerity, opening, inversion, category of one run."""
+    input: "results/{sweep}/{point}/run.h5"
+    output: "results/{sweep}/{point}/metrics.json"
+    log: "results/{sweep}/{point}/logs/measure.log"
+    resources: mem_mb=2000, runtime=10
+    shell: "{PYTHON} -m analysis measure {input} -o {output} > {log} 2>&1"

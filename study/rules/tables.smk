@@ -1,0 +1,99 @@
+# Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
+
+localrules: aggregate, aggregate_study, compare, reference_check, flutter
+
+
+ruleorder: aggregate_study > aggregate
+
+
+rule aggregate:
+    """`python3 -m analysis aggregate`: one sweep's metrics -> Table 1 (csv/md/tex), summary, all metrics."""
+    input:
+        metrics=lambda wc: run_files(wc.sweep, "metrics.json"),
+        reference=repo_path(config["reference"]["table"]),
+    output: table_files("{sweep}")
+    params:
+        directory="results/{sweep}/table",
+        tolerance=config["reference"]["tolerance"],
+        select=lambda wc: table_select(points(wc.sweep), sweep_spec(wc.sweep).get("highlight")),
+    log: "results/{sweep}/logs/aggregate.log"
+    shell:
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
+
+
+rule aggregate_study:
+    """The whole study in one table (what paper/ quotes): every distinct run of the `study` sweeps
+    made with the default run settings; Table 1 from the runs at the default parameters."""
+    input:
+        metrics=lambda wc: [f"{run_dir(sweep, name)}/metrics.json" for name, (sweep, _) in study_points().items()],
+        reference=repo_path(config["reference"]["table"]),
+    output: table_files("study")
+    params:
+        directory="results/study/table",
+        tolerance=config["reference"]["tolerance"],
+        select=lambda wc: table_select({name: point for name, (_, point) in study_points().items()}),
+    log: "results/study/logs/aggregate.log"
+    shell:
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
+
+
+rule compare:
+    """Regenerated vs published celerities. The verdict is recorded, not enforced: `all` must reach
+    the report whatever the fidelity; `reference_check` is the gate."""
+    input:
+        table="results/{sweep}/table/table1.csv",
+        reference=repo_path(config["reference"]["table"]),
+    output: "results/{sweep}/table/comparison.txt"
+    params: tolerance=config["reference"]["tolerance"]
+    log: "results/{sweep}/logs/compare.log"
+    shell:
+        "status=0; {PYTHON} -m analysis compare {input.table} --reference {input.reference}"
+        " --tolerance {params.tolerance} --min-within 0 > {output} 2> {log} || status=$?;"
+        " echo \"compare exit status: $status\" >> {output}"
+
+
+def ratchet_min_within(wildcards, input):
+    """The ratchet's minimum count of cells within tolerance; its resolution must be the check sweep's."""
+    with open(input.ratchet) as stream:
+        ratchet = json.load(stream)
+    resolutions = {p["elements_per_H"] for p in points(config["reference"]["check_sweep"]).values()}
+    if resolutions != {ratchet["resolution"]}:
+        raise ValueError(f"{input.ratchet} is for H/{ratchet['resolution']}, the check sweep runs "
+                         f"H/{sorted(resolutions)}")
+    return int(ratchet["min_cells_within_5pct"])
+
+
+def ratchet_known_mismatches(wildcards, input):
+    """--known-mismatch options for the cells whose wrong sign or regime the ratchet file records."""
+    with open(input.ratchet) as stream:
+        known = json.load(stream).get("known_mismatches", {})
+    return " ".join(f"--known-mismatch '{cell}'" for cell in known)
+
+
+rule reference_check:
+    """CI gate: Table 1 regenerated at H/32 must keep every published sign and regime and at least the
+    ratchet's count of cells within tolerance (study/reference/ratchet.json; raise it, never lower it)."""
+    input:
+        table=f"results/{config['reference']['check_sweep']}/table/table1.csv",
+        reference=repo_path(config["reference"]["table"]),
+        ratchet=repo_path(config["reference"]["ratchet"]),
+    output: f"results/{config['reference']['check_sweep']}/reference_check.txt"
+    params:
+        tolerance=config["reference"]["tolerance"],
+        min_within=ratchet_min_within,
+        known=ratchet_known_mismatches,
+    log: f"results/{config['reference']['check_sweep']}/logs/reference_check.log"
+    shell:
+        "{PYTHON} -m analysis compare {input.table} --reference {input.reference}"
+        " --tolerance {params.tolerance} --min-within {params.min_within} --ratchet {params.known} > {log} 2>&1"
+        " && cp {log} {output}"
+
+
+rule flutter:
+    """Flutter wedge of steady sliding on a rigid flat (Martins et al. 1995), from analysis.flutter."""
+    output: "results/theory/flutter.txt"
+    params: nu=" ".join(f"{nu:.6g}" for nu in flutter_nu())
+    log: "results/theory/logs/flutter.log"
+    shell: "{PYTHON} -m analysis flutter-boundary --nu {params.nu} > {output} 2> {log}"

@@ -1,0 +1,198 @@
+#!/usr/bin/python3
+"""Self-contained HTML summary of a study: Table 1 published vs regenerated, figures, provenance.
+
+    study/scripts/report.py --manifest MANIFEST_JSON --out results/report.html
+
+Snakemake's own `--report` needs internet in 7.21; this page needs nothing but the files the
+manifest names (built by study/rules/report.smk):
+
+    {"title": str, "tolerance": 0.05,
+     "sections": [{"sweep": str, "description": str, "table": table1.csv of `analysis aggregate`,
+                   "cells": [[nu, f], ...] (the sweep's points), "comparison": comparison.txt or null,
+                   "figures": [PNG, ...], "runs": [{"name": str, "dir": results/<sweep>/<point>}, ...]},
+                  ...]}
+
+Figures are embedded as base64 PNG; each caption names the script that drew it. Nothing is
+computed here: deviations, signs and regimes are the aggregate's columns, per-run values the
+metrics.json keys, wall time and memory Snakemake's benchmark of `simulate`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import base64
+import csv
+import datetime
+import html
+import json
+import math
+import platform
+import subprocess
+import sys
+from pathlib import Path
+
+#: metrics.json keys shown per run, when present.
+RUN_KEYS = ("category", "celerity", "regime", "onset_time", "min_T_over_N", "max_opening",
+            "pulse_count", "energy_balance_error", "end_reason", "run_complete")
+
+CSS = """
+body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; color: #222; }
+table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.9em; }
+th, td { border: 1px solid #ccc; padding: 0.15em 0.5em; text-align: right; }
+th { background: #f0f0f0; } td.l, th.l { text-align: left; }
+tr.bad td { background: #fde0dc; } tr.far td { background: #fff4cc; }
+figure { display: inline-block; margin: 0.5em; max-width: 48%; vertical-align: top; }
+figure img { max-width: 100%; } figcaption { font-size: 0.8em; color: #555; }
+pre { background: #f7f7f7; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
+"""
+
+
+def _number(text: str) -> float:
+    """A CSV cell as float; empty -> nan."""
+    text = (text or "").strip()
+    return float(text) if text else math.nan
+
+
+def read_csv(path: str) -> list[dict]:
+    with open(path, newline="") as stream:
+        return list(csv.DictReader(stream))
+
+
+def read_json(path: Path) -> dict:
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+
+
+def read_benchmark(path: Path) -> dict:
+    """Snakemake benchmark TSV (first row): wall seconds `s` and `max_rss` (MB)."""
+    try:
+        rows = list(csv.DictReader(path.open(), delimiter="\t"))
+    except OSError:
+        return {}
+    return rows[0] if rows else {}
+
+
+def fmt(value, digits: int = 4) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, float):
+        return "" if math.isnan(value) else f"{value:.{digits}g}"
+    return html.escape(str(value))
+
+
+def comparison_rows(table_path: str, cells: list[list[float]]) -> list[dict]:
+    """Rows of the aggregate's table1.csv (published cells) that this sweep ran."""
+    ran = {(round(nu, 6), round(f, 6)) for nu, f in cells}
+    return [row for row in read_csv(table_path)
+            if (round(_number(row["nu"]), 6), round(_number(row["f"]), 6)) in ran]
+
+
+def table_html(rows: list[dict], tolerance: float) -> str:
+    """Published vs regenerated celerity, from the aggregate's columns (nothing recomputed)."""
+    if not rows:
+        return "<p>No published cell among this sweep's points.</p>"
+    within = sum(r.get("within_tol") == "true" for r in rows)
+    measured = sum(bool((r.get("celerity") or "").strip()) for r in rows)
+    wrong = sum(r.get("sign_match") == "false" for r in rows)
+    out = [f"<p>{len(rows)} published cells run, {measured} with a measured celerity: {within} within "
+           f"{tolerance:.0%}, {wrong} with the wrong sign.</p>",
+           "<table><tr><th>nu</th><th>f</th><th>published c_p (m/s)</th><th>regenerated c_p (m/s)</th>"
+           "<th>deviation</th><th class=l>regime (published)</th><th class=l>category</th><th>min T/N</th></tr>"]
+    for r in rows:
+        deviation = _number(r.get("deviation_rel", ""))
+        css = ("bad" if r.get("sign_match") == "false" or not (r.get("celerity") or "").strip() else
+               "far" if r.get("within_tol") == "false" else "")
+        dev = "" if math.isnan(deviation) else f"{100 * deviation:+.1f} %"
+        out.append(f"<tr class='{css}'><td>{fmt(r['nu'])}</td><td>{fmt(r['f'])}</td>"
+                   f"<td>{fmt(_number(r['published']))}</td><td>{fmt(_number(r.get('celerity', '')))}</td>"
+                   f"<td>{dev}</td><td class=l>{fmt(r.get('regime'))} ({fmt(r.get('published_regime'))})</td>"
+                   f"<td class=l>{fmt(r.get('category'))}</td><td>{fmt(_number(r.get('min_T_over_N', '')), 3)}</td></tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def figure_html(path: str) -> str:
+    data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
+    stem = Path(path).stem
+    script = "figures/" + ("snapshots" if stem.startswith("snapshots_") else
+                           "spacetime" if stem.startswith("spacetime_") else stem) + ".py"
+    return (f"<figure><img alt='{html.escape(stem)}' src='data:image/png;base64,{data}'>"
+            f"<figcaption>{html.escape(path)} (drawn by {script})</figcaption></figure>")
+
+
+def runs_html(runs: list[dict]) -> str:
+    out = ["<table><tr><th class=l>run</th>" + "".join(f"<th>{k}</th>" for k in RUN_KEYS)
+           + "<th>t_end (s)</th><th>stop after opening (s)</th><th>wall (s)</th><th>max RSS (MB)</th></tr>"]
+    total = 0.0
+    for run in runs:
+        directory = Path(run["dir"])
+        metrics = read_json(directory / "metrics.json")
+        config = read_json(directory / "config.json").get("time", {})
+        bench = read_benchmark(directory / "logs" / "simulate.benchmark.tsv")
+        wall = _number(bench.get("s", ""))
+        total += wall if math.isfinite(wall) else 0.0
+        cells = "".join(f"<td>{fmt(metrics.get(k))}</td>" for k in RUN_KEYS)
+        out.append(f"<tr><td class=l>{html.escape(run['name'])}</td>{cells}<td>{fmt(config.get('t_end'), 6)}</td>"
+                   f"<td>{fmt(config.get('stop_after_opening'))}</td><td>{fmt(wall)}</td>"
+                   f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
+    out.append("</table>")
+    out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")
+    return "\n".join(out)
+
+
+def provenance_html(runs: list[dict]) -> str:
+    """Pipeline commit and what wrote the runs (solver version and commit as the metrics report them)."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        commit = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty"],
+                                capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        commit = "unknown (not a git checkout)"
+    writers = set()
+    for run in runs:
+        metrics = read_json(Path(run["dir"]) / "metrics.json")
+        writers.add(tuple(str(metrics.get(k, "?")) for k in ("slidewave_version", "git_commit")))
+    items = [f"generated {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M UTC}",
+             f"pipeline commit {html.escape(commit)}",
+             f"Python {platform.python_version()} on {html.escape(platform.node())}"]
+    items += [f"runs written by slidewave {html.escape(v)} (commit {html.escape(c)})" for v, c in sorted(writers)]
+    return "<ul>" + "".join(f"<li>{item}</li>" for item in items) + "</ul>"
+
+
+def render(manifest: dict) -> str:
+    tolerance = manifest.get("tolerance", 0.05)
+    all_runs = [run for section in manifest["sections"] for run in section["runs"]]
+    body = [f"<h1>{html.escape(manifest['title'])}</h1>", provenance_html(all_runs)]
+    for section in manifest["sections"]:
+        body.append(f"<h2>Sweep <code>{html.escape(section['sweep'])}</code></h2>")
+        if section.get("description"):
+            body.append(f"<p>{html.escape(section['description'])}</p>")
+        body.append("<h3>Table 1: published vs regenerated</h3>")
+        body.append(table_html(comparison_rows(section["table"], section["cells"]), tolerance))
+        if section.get("comparison"):
+            text = Path(section["comparison"]).read_text()
+            body.append(f"<details><summary>analysis compare</summary><pre>{html.escape(text)}</pre></details>")
+        if section.get("figures"):
+            body.append("<h3>Figures</h3>" + "".join(figure_html(p) for p in section["figures"]))
+        body.append("<h3>Runs</h3>" + runs_html(section["runs"]))
+    return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(manifest['title'])}"
+            f"</title><style>{CSS}</style></head><body>{''.join(body)}</body></html>\n")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--manifest", required=True, help="JSON text (see the module docstring)")
+    parser.add_argument("--out", required=True, type=Path, help="HTML file to write")
+    args = parser.parse_args(argv)
+    page = render(json.loads(args.manifest))
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text(page)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

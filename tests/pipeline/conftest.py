@@ -1,0 +1,93 @@
+"""Shared set-up of the pipeline tests: the repository on sys.path, the study config, the `slurm`
+marker (skipped unless selected with `-m slurm` or SLIDEWAVE_TEST_SLURM=1), and a runner for
+Snakemake in a scratch directory."""
+
+import copy
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+REPO = Path(__file__).resolve().parents[2]
+if str(REPO) not in sys.path:
+    sys.path.insert(0, str(REPO))
+
+SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
+SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slurm: runs the pipeline through a local SLURM (start it with "
+                                       "scripts/slurm/local_slurm.sh); skipped unless selected with -m slurm")
+
+
+def pytest_collection_modifyitems(config, items):
+    selected = "slurm" in (config.getoption("markexpr") or "") or os.environ.get("SLIDEWAVE_TEST_SLURM") == "1"
+    if selected:
+        return
+    skip = pytest.mark.skip(reason="SLURM test: run with -m slurm (needs scripts/slurm/local_slurm.sh)")
+    for item in items:
+        if "slurm" in item.keywords:
+            item.add_marker(skip)
+
+
+@pytest.fixture(scope="session")
+def study_config():
+    """study/config.yaml validated (defaults filled) exactly as the Snakefile does."""
+    from snakemake.utils import validate
+
+    with open(REPO / "study" / "config.yaml") as stream:
+        config = yaml.safe_load(stream)
+    validate(config, str(REPO / "study" / "config.schema.yaml"))
+    return config
+
+
+@pytest.fixture
+def config(study_config):
+    """A copy of the validated study config that a test may change."""
+    return copy.deepcopy(study_config)
+
+
+def solver_or_skip():
+    """The solver binary; skipped when it is not built, a failure under CI=true."""
+    if SOLVER.is_file() and os.access(SOLVER, os.X_OK):
+        return SOLVER
+    message = f"solver binary {SOLVER} not built (cmake -S . -B build && cmake --build build)"
+    if os.environ.get("CI") == "true":
+        pytest.fail(message)
+    pytest.skip(message)
+
+
+def snakemake(workdir, *args, env=None, check=True, timeout=1800):
+    """Runs the repository's Snakefile with results in `workdir`; returns the CompletedProcess."""
+    environment = {**os.environ, **(env or {})}
+    environment.setdefault("SLIDEWAVE_BIN", str(SOLVER))
+    command = [SNAKEMAKE, "-s", str(REPO / "Snakefile"), "--directory", str(workdir), *args]
+    result = subprocess.run(command, capture_output=True, text=True, env=environment, timeout=timeout)
+    if check and result.returncode != 0:
+        raise AssertionError(f"{' '.join(command)} failed ({result.returncode}):\n"
+                             f"{result.stdout[-4000:]}\n{result.stderr[-8000:]}")
+    return result
+
+
+def job_counts(output):
+    """{rule: count} from the 'Job stats' table of a Snakemake (dry) run."""
+    counts, inside = {}, False
+    for line in output.splitlines():
+        if line.startswith("Job stats"):
+            inside, counts = True, {}
+            continue
+        if inside:
+            parts = line.split()
+            if not parts:
+                if counts:
+                    inside = False
+                continue
+            if parts[0] == "total":
+                inside = False
+            elif len(parts) >= 2 and parts[1].isdigit():
+                counts[parts[0]] = int(parts[1])
+    return counts

@@ -1,0 +1,86 @@
+"""study/run_length.py and study/resources.py against closed forms and PHYSICS-NOTES.md."""
+
+import math
+
+import pytest
+
+from study import resources
+from study.run_length import onset_time_estimate, run_length, shear_wave_speed
+
+PAPER = dict(E=1000.0, H=25.0, Uy_over_H=-0.001, preshear_ratio=0.95, V0_over_cs=1e-5)
+
+
+def onset(nu, f, rho=1000.0, **changes):
+    return onset_time_estimate(**{**PAPER, **changes}, nu=nu, f=f, rho=rho)
+
+
+def test_onset_by_hand_at_the_papers_reference_point():
+    # nu = 0.2: p0 = 0.001 E 0.8 / (1.2 * 0.6) = 10/9 Pa, G = 1000/2.4 Pa, c_s = sqrt(G/1000).
+    p0, G = 10.0 / 9.0, 1000.0 / 2.4
+    V0 = 1e-5 * math.sqrt(G / 1000.0)
+    expected = 0.05 * 1.5 * p0 * 25.0 / (G * V0)
+    assert onset(0.2, 1.5) == pytest.approx(expected, rel=1e-14)
+    assert expected == pytest.approx(774.597, abs=1e-3)  # the solver's t_onset_estimate attribute
+
+
+@pytest.mark.parametrize("nu, f, first_slip", [(0.0, 1.5, 530.0), (0.2, 1.5, 740.0), (0.3, 1.5, 1010.0),
+                                               (0.45, 1.0, 2260.0), (0.49, 2.0, 22000.0)])
+def test_onset_estimate_is_near_the_measured_first_slip(nu, f, first_slip):
+    # PHYSICS-NOTES: the first slip lands on a stair of the shear-wave staircase (round trip 2H/c_s).
+    round_trip = 2 * 25.0 / shear_wave_speed(1000.0, nu, 1000.0)
+    assert abs(onset(nu, f) - first_slip) < round_trip
+
+
+def test_onset_scales_with_f_and_inversely_with_V0_and_not_with_rho():
+    assert onset(0.3, 2.0) == pytest.approx(2 * onset(0.3, 1.0), rel=1e-14)
+    assert onset(0.3, 1.0, V0_over_cs=1e-6) == pytest.approx(10 * onset(0.3, 1.0), rel=1e-14)
+    # V0 = 1e-5 c_s and c_s ~ rho^-1/2: the onset time scales like sqrt(rho), as dt does.
+    assert onset(0.3, 1.0, rho=10.0) == pytest.approx(onset(0.3, 1.0) / 10.0, rel=1e-14)
+
+
+def test_run_length_adds_transits_and_stops_after_opening():
+    times = run_length(**PAPER, nu=0.2, rho=1000.0, f=1.5, duration_transits=60, stop_after_opening_transits=15)
+    transit = 25.0 / shear_wave_speed(1000.0, 0.2, 1000.0)
+    assert times.transit_time == pytest.approx(38.7298, abs=1e-4)
+    assert times.t_end == pytest.approx(onset(0.2, 1.5) + 60 * transit, rel=1e-14)
+    assert times.stop_after_opening == pytest.approx(15 * transit, rel=1e-14)
+    # The cap holds the slow growth near f = 1 (nu = 0, f = 1.1 opens ~800 s after the first slip)
+    # plus the stop delay, with margin.
+    near_one = run_length(**PAPER, nu=0.0, rho=1000.0, f=1.1, duration_transits=60, stop_after_opening_transits=15)
+    assert near_one.t_end - near_one.t_onset_estimate > 800.0 + near_one.stop_after_opening + 500.0
+
+
+def test_explicit_t_end_and_no_stop():
+    times = run_length(**PAPER, nu=0.2, rho=1000.0, f=1.5, duration_transits=60,
+                       stop_after_opening_transits=None, t_end=20000.0)
+    assert times.t_end == 20000.0 and times.stop_after_opening is None
+
+
+@pytest.mark.parametrize("bad", [dict(duration_transits=0), dict(stop_after_opening_transits=-1.0),
+                                 dict(t_end=0.0)])
+def test_bad_lengths_are_rejected(bad):
+    arguments = dict(duration_transits=60, stop_after_opening_transits=15, t_end=None)
+    with pytest.raises(ValueError):
+        run_length(**PAPER, nu=0.2, rho=1000.0, f=1.5, **{**arguments, **bad})
+
+
+def test_step_count_does_not_depend_on_density():
+    # Durations in H/c_s and dt = 0.5 m / c_s: the same number of steps whatever rho.
+    counts = set()
+    for rho in (0.1, 10.0, 1000.0):
+        times = run_length(**PAPER, nu=0.2, rho=rho, f=1.5, duration_transits=60, stop_after_opening_transits=15)
+        counts.add(resources.n_steps(E=1000.0, nu=0.2, rho=rho, t_end=times.t_end))
+    assert len(counts) == 1
+    (steps,) = counts
+    # The onset estimate at nu = 0.2, f = 1.5 is 1000 steps exactly (774.597 s / 0.774597 s), and a
+    # transit is H / (0.5 m) = 50 steps.
+    assert steps == 1000 + 60 * 50
+
+
+def test_cost_model_matches_the_measured_step_times():
+    assert resources.ms_per_step(32, 2.0) == pytest.approx(1.4)
+    assert resources.ms_per_step(64, 2.0) == pytest.approx(9.0, rel=0.02)
+    assert resources.ms_per_step(64, 4.0) > resources.ms_per_step(64, 2.0)
+    small = resources.estimate(elements_per_H=32, lambda_over_H=2.0, steps=4000)
+    large = resources.estimate(elements_per_H=128, lambda_over_H=2.0, steps=4000)
+    assert 5 <= small["runtime"] < large["runtime"] and small["mem_mb"] < large["mem_mb"]

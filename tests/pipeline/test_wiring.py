@@ -1,0 +1,128 @@
+"""The DAG of every target, by dry runs (no solver needed): counts of jobs per rule, the ratchet's
+checks, and that a new point adds exactly its own jobs."""
+
+import json
+import re
+
+import pytest
+import yaml
+
+from .conftest import REPO, SOLVER, job_counts, snakemake
+
+# Dry runs execute nothing: any existing file stands in for an unbuilt solver.
+DRY_ENV = {"SLIDEWAVE_BIN": str(SOLVER) if SOLVER.is_file() else "/bin/true"}
+
+
+@pytest.fixture
+def workdir(tmp_path):
+    return tmp_path / "work"
+
+
+def dry(workdir, *args, **kwargs):
+    result = snakemake(workdir, "-n", "--nolock", *args, env=DRY_ENV, **kwargs)
+    return result, job_counts(result.stdout)
+
+
+def test_ci_target(workdir):
+    _, counts = dry(workdir, "ci")
+    assert counts == {"aggregate": 1, "ci": 1, "configure": 2, "fig_spacetime": 1, "measure": 2, "simulate": 2}
+
+
+def test_quick_is_the_default_target(workdir):
+    _, default = dry(workdir)
+    _, quick = dry(workdir, "quick")
+    assert default == quick
+    assert quick["simulate"] == 4 and quick["sweep_report"] == 1 and quick["fig_phase_diagram"] == 1
+
+
+SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1}
+
+
+def jobs(output):
+    """[(rule, {field: text})] of a dry run's job listing (`input:`, `output:`, `wildcards:`, ...)."""
+    found = []
+    for block in output.split("\n\n"):
+        match = re.search(r"^(?:local)?rule (\w+):$", block, re.MULTILINE)
+        if match:
+            fields = dict(re.findall(r"^    (\w+): (.*)$", block, re.MULTILINE))
+            found.append((match.group(1), fields))
+    return found
+
+
+def simulations_per_sweep(output):
+    """{sweep: number of simulate jobs} from a dry run's job listing."""
+    counts = {}
+    for rule, fields in jobs(output):
+        if rule == "simulate":
+            sweep = fields["wildcards"].split("sweep=")[1].split(",")[0]
+            counts[sweep] = counts.get(sweep, 0) + 1
+    return counts
+
+
+def test_all_builds_every_sweep_the_report_and_the_paper():
+    # In the checkout: the paper is built from paper/ (not copied under --directory).
+    result, counts = dry(REPO, "all", "--forceall")
+    assert simulations_per_sweep(result.stdout) == SIMULATIONS
+    assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
+    assert counts["paper_figure"] == 15 and counts["paper"] == 1 and counts["report"] == 1
+    assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 and counts["fig_convergence"] == 3
+
+
+def test_one_target_per_sweep(workdir):
+    _, counts = dry(workdir, "period", "mesh")
+    assert counts["simulate"] == 6 and counts["fig_pulse_spacing"] == 1 and counts["fig_convergence"] == 1
+    _, counts = dry(workdir, "phase_diagram")
+    assert counts["simulate"] == 98 and counts["fig_phase_diagram"] == 1 and counts["flutter"] == 1
+
+
+def test_figures_never_depend_on_solver(workdir):
+    """Restyling a figure reruns the figure only: figure rules take run.h5 / tables, not the solver."""
+    result, _ = dry(workdir, "figures", "--forceall")
+    figures = [fields for rule, fields in jobs(result.stdout) if rule.startswith("fig_")]
+    assert len(figures) > 20
+    for fields in figures:
+        assert "slidewave" not in fields["input"] and "config.json" not in fields["input"]
+
+
+def write_ratchet(directory, resolution, minimum=0):
+    path = directory / "ratchet.json"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps({"min_cells_within_5pct": minimum, "resolution": resolution}))
+    return path
+
+
+def test_reference_check_reads_the_ratchet(workdir, tmp_path):
+    ratchet = write_ratchet(tmp_path, 32, minimum=7)
+    result, counts = dry(workdir, "reference_check", "-p", "--config", f"reference={{ratchet: {ratchet}}}")
+    assert counts["simulate"] == 38 and counts["reference_check"] == 1
+    assert "--min-within 7" in result.stdout
+
+
+def test_ratchet_for_another_resolution_is_refused(workdir, tmp_path):
+    ratchet = write_ratchet(tmp_path, 64)
+    result = snakemake(workdir, "-n", "--nolock", "reference_check", "--config", f"reference={{ratchet: {ratchet}}}",
+                       env=DRY_ENV, check=False)
+    assert result.returncode != 0 and "H/64" in result.stdout + result.stderr
+
+
+def test_a_new_point_runs_alone(workdir, tmp_path, study_config):
+    """`--configfile` extends the study; the DAG of the extended ci sweep has one more run."""
+    extra = tmp_path / "extra.yaml"
+    points = study_config["sweeps"]["ci"]["points"] + [{"nu": 0.3, "f": 1.25}]
+    extra.write_text(yaml.safe_dump({"sweeps": {"ci": {"points": points}}}))
+    result, counts = dry(workdir, "ci", "--configfile", str(REPO / "study" / "config.yaml"), str(extra))
+    assert counts["simulate"] == 3
+    assert "nu0.30_f1.25_v1e-05_L2_n16_rho1000_reduced" in result.stdout
+
+
+def test_command_line_points_are_typed(workdir):
+    result, counts = dry(workdir, "mine", "--config", "sweeps={mine: {fixed: {elements_per_H: 32}, "
+                                                      "points: [{nu: 0.3, f: 1.25}, {nu: 0.1, f: 1e-1}]}}")
+    assert counts["simulate"] == 2
+    assert "nu0.10_f0.10_v1e-05_L2_n32_rho1000_reduced" in result.stdout
+
+
+def test_bad_config_stops_before_any_job(workdir):
+    result = snakemake(workdir, "-n", "--nolock", "ci", "--config", "sweeps={ci: {points: [{nu: 0.7}]}}",
+                       env=DRY_ENV, check=False)
+    assert result.returncode != 0 and "0.7" in result.stdout + result.stderr

@@ -1,0 +1,148 @@
+// FFT block-circulant solver (linalg/block_circulant_solver) against CHOLMOD (linalg/sparse_cholesky)
+// and a dense LLT on the layer's own matrices: K_eff, K_ff, M_ff for every integration and mass, odd
+// and even n_x (the Nyquist mode), n_y from 1; and its refusals (not circulant, not symmetric, not SPD).
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "linalg/block_circulant_solver.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "model/layer_model.hpp"
+#include "model/simulation.hpp"
+#include "test_support.hpp"
+#include "time/hht.hpp"
+
+namespace slidewave {
+namespace {
+
+Eigen::VectorXd random_vector(int n, std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) b(i) = uniform(generator);
+  return b;
+}
+
+struct Layer {
+  RunConfig config;
+  LayerModel model;
+};
+
+Layer layer(int n_x, int n_y, Integration integration, const char* mass) {
+  // lambda_over_H = n_x / n_y gives n_x columns of elements.
+  RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", std::max(n_y, 2)},
+                                                     {"integration", testing::integration_name(integration)},
+                                                     {"mass", mass}}},
+                                           {"geometry", {{"lambda_over_H", double(n_x) / std::max(n_y, 2)}}}});
+  return {config, LayerModel(config)};
+}
+
+TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
+  for (int n_x : {3, 4, 5, 8})
+    for (int n_y : {2, 3, 5})
+      for (Integration integration : testing::kAllIntegrations)
+        for (const char* mass : {"consistent", "lumped"}) {
+          const Layer l = layer(n_x, n_y, integration, mass);
+          ASSERT_EQ(l.model.mesh.n_x, n_x);
+          const HHTCoefficients hht(0.1, l.model.d.dt);
+          const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * l.model.M_ff + (1 - hht.alpha) * l.model.K_ff;
+          const std::string where = "n_x = " + std::to_string(n_x) + " n_y = " + std::to_string(n_y) + " " +
+                                    testing::integration_name(integration) + " " + mass;
+          const std::vector<std::pair<const char*, Eigen::SparseMatrix<double>>> matrices = {
+              {"K_eff", K_eff}, {"M_ff", l.model.M_ff}, {"K_ff", l.model.K_ff}};
+          for (const auto& [name, A] : matrices) {
+            std::string reason;
+            ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason)) << where << " " << name << ": " << reason;
+            const BlockCirculantSolver fft(A, n_x, n_y);
+            EXPECT_EQ(fft.size(), A.rows());
+            const Eigen::VectorXd b = random_vector(fft.size(), 17);
+            const Eigen::VectorXd x = fft.solve(b);
+            const Eigen::VectorXd x_dense = Eigen::MatrixXd(A).llt().solve(b);
+            const Eigen::VectorXd x_cholmod = SparseCholesky(A).solve(b);
+            EXPECT_LE((x - x_dense).norm(), 1e-11 * x_dense.norm()) << where << " " << name;
+            EXPECT_LE((x - x_cholmod).norm(), 1e-11 * x_cholmod.norm()) << where << " " << name;
+            EXPECT_LE((A * x - b).norm(), 1e-11 * b.norm() * Eigen::MatrixXd(A).norm() * x.norm() / b.norm())
+                << where << " " << name;
+          }
+        }
+}
+
+TEST(BlockCirculantSolver, SolveVariantsAgreeBitwise) {
+  const Layer l = layer(6, 4, Integration::reduced, "consistent");
+  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+  const BlockCirculantSolver fft(A, 6, 4);
+  const Eigen::VectorXd b = random_vector(fft.size(), 3);
+  const Eigen::VectorXd x = fft.solve(b);
+  EXPECT_EQ(fft.solve(b), x) << "repeatable";
+  Eigen::VectorXd in_place = b;
+  fft.solve_into(in_place, in_place);
+  EXPECT_EQ(in_place, x) << "b and x may be the same vector";
+  Eigen::MatrixXd B(fft.size(), 3);
+  B << b, random_vector(fft.size(), 4), random_vector(fft.size(), 5);
+  const Eigen::MatrixXd X = fft.solve(B);
+  EXPECT_EQ(Eigen::VectorXd(X.col(0)), x);
+  EXPECT_EQ(Eigen::VectorXd(X.col(2)), fft.solve(Eigen::VectorXd(B.col(2))));
+  EXPECT_THROW(fft.solve(Eigen::VectorXd(Eigen::VectorXd::Zero(fft.size() + 1))), std::invalid_argument);
+}
+
+TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
+  const Layer l = layer(5, 3, Integration::reduced, "consistent");
+  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+  std::string reason;
+  // Not circulant: one entry of slice 2 differs from slice 0 (symmetrically, so only circulance fails).
+  Eigen::SparseMatrix<double> broken = A;
+  const int dof = 2 * l.model.mesh.node(2, 1);
+  broken.coeffRef(dof, dof) *= 1.01;
+  EXPECT_FALSE(BlockCirculantSolver::is_block_circulant(broken, 5, 3, &reason));
+  EXPECT_FALSE(reason.empty());
+  EXPECT_THROW(BlockCirculantSolver(broken, 5, 3), std::invalid_argument);
+  // Not symmetric: the same change in every slice, on one side of the diagonal.
+  Eigen::SparseMatrix<double> skew = A;
+  for (int i = 0; i < 5; ++i) skew.coeffRef(2 * l.model.mesh.node(i, 0), 2 * l.model.mesh.node(i, 1)) += 1.0;
+  EXPECT_FALSE(BlockCirculantSolver::is_block_circulant(skew, 5, 3, &reason));
+  EXPECT_THROW(BlockCirculantSolver(skew, 5, 3), std::invalid_argument);
+  // Wrong sizes.
+  EXPECT_FALSE(BlockCirculantSolver::is_block_circulant(A, 4, 3, &reason));
+  EXPECT_THROW(BlockCirculantSolver(A, 5, 2), std::invalid_argument);
+  // Not positive definite.
+  const Eigen::SparseMatrix<double> negative = -A;
+  EXPECT_TRUE(BlockCirculantSolver::is_block_circulant(negative, 5, 3));
+  EXPECT_THROW(BlockCirculantSolver(negative, 5, 3), std::runtime_error);
+}
+
+// numerics.linear_solver: both solvers give the same discrete run to round-off. Compared before the
+// slip onset (the stick phase is not chaotic; after onset round-off differences grow).
+TEST(BlockCirculantSolver, SameRunAsCholmodBeforeSlipOnset) {
+  RunRecord runs[2];
+  const char* kinds[2] = {"circulant", "cholmod"};
+  for (int s = 0; s < 2; ++s)
+    runs[s] = simulate(LayerModel(testing::make_config({{"mesh", {{"elements_per_H", 8}}},
+                                                        {"time", {{"t_end", 600.0}}},
+                                                        {"numerics", {{"linear_solver", kinds[s]}}}})));
+  const auto &a = runs[0], &b = runs[1];
+  ASSERT_EQ(a.global.t.size(), b.global.t.size());
+  EXPECT_NEAR(a.u_x_preshear, b.u_x_preshear, 1e-12 * std::fabs(b.u_x_preshear));
+  const auto max_relative = [](const std::vector<double>& x, const std::vector<double>& y) {
+    double scale = 0, diff = 0;
+    for (size_t n = 0; n < x.size(); ++n) {
+      scale = std::max(scale, std::fabs(y[n]));
+      diff = std::max(diff, std::fabs(x[n] - y[n]));
+    }
+    return scale > 0 ? diff / scale : diff;
+  };
+  EXPECT_LE(max_relative(a.global.T, b.global.T), 1e-10);
+  EXPECT_LE(max_relative(a.global.N, b.global.N), 1e-10);
+  EXPECT_LE(max_relative(a.global.energy_elastic, b.global.energy_elastic), 1e-10);
+  EXPECT_LE(max_relative(a.global.energy_kinetic, b.global.energy_kinetic), 1e-8);
+  // Sticking nodes only move by the contact tolerance: compare slip with the preload displacement |Uy|.
+  double max_slip_difference = 0;
+  for (size_t n = 0; n < a.interface.slip.data.size(); ++n)
+    max_slip_difference = std::max(max_slip_difference, std::fabs(a.interface.slip.data[n] - b.interface.slip.data[n]));
+  EXPECT_LE(max_slip_difference, 1e-10 * 0.025);
+  EXPECT_LE(max_relative(a.interface.normal_traction.data, b.interface.normal_traction.data), 1e-10);
+  EXPECT_EQ(a.interface.state.data, b.interface.state.data);
+}
+
+}  // namespace
+}  // namespace slidewave

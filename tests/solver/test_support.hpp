@@ -1,0 +1,43 @@
+#pragma once
+// Small helpers shared by the test files (no assertions here: each test states its own oracle).
+#include <nlohmann/json.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "config/run_config.hpp"
+
+namespace slidewave::testing {
+
+inline const Integration kAllIntegrations[] = {Integration::full, Integration::reduced, Integration::reduced_pure};
+
+inline std::string integration_name(Integration i) {
+  switch (i) {
+    case Integration::full: return "full";
+    case Integration::reduced: return "reduced";
+    case Integration::reduced_pure: return "reduced_pure";
+  }
+  return "?";
+}
+
+/// Tests of known, reported bugs skip themselves (GTEST_SKIP) unless SLIDEWAVE_RUN_KNOWN_BUGS is set,
+/// so the suite stays green until a fix lands and the fix can be checked with
+///     SLIDEWAVE_RUN_KNOWN_BUGS=1 ctest --test-dir build-tests -LE long
+inline bool run_known_bugs() { return std::getenv("SLIDEWAVE_RUN_KNOWN_BUGS") != nullptr; }
+
+/// Scientific notation for RecordProperty (std::to_string prints 1e-12 as 0.000000).
+inline std::string sci(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", x);
+  return buffer;
+}
+
+/// The paper's configuration with the given overrides merged in (JSON merge-patch), validated.
+inline RunConfig make_config(const nlohmann::json& overrides = nlohmann::json::object()) {
+  nlohmann::json j = RunConfig{}.to_json();
+  j.merge_patch(overrides);
+  j["output"]["progress"] = "never";
+  return parse_run_config(j);
+}
+
+}  // namespace slidewave::testing
