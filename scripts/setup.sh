@@ -12,7 +12,7 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
-    --latex) packages+=(latexmk texlive-latex-recommended texlive-latex-extra) ;;
+    --latex) packages+=(latexmk texlive-latex-recommended) ;;
     --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
     --getfem) packages+=(python3-getfem) ;;
     *) echo "setup.sh: unknown option $option (allowed: --latex --slurm --getfem)" >&2; exit 2 ;;

@@ -10,5 +10,5 @@ bash scripts/setup.sh --latex
 bash scripts/build.sh
 ctest --test-dir build -LE long --output-on-failure -j2
 "$PYTHON" -m pytest -q tests/analysis tests/figures tests/pipeline
-snakemake -c"$(nproc)" --quiet reference_check
+snakemake -c"$(nproc)" reference_check
 cat results/table1_ci/reference_check.txt | tail -1
