@@ -30,6 +30,18 @@ class FrictionalDrop:
     complete: bool
 
 
+def bridge_undefined(t: np.ndarray, ratio: np.ndarray) -> np.ndarray:
+    """T/N with its undefined samples (NaN: the whole interface open, N = 0) bridged linearly in time
+    from the defined neighbours, so that minima and drops are measured on the defined values only.
+
+    Returns the input unchanged when every sample is defined, all-NaN when none is.
+    """
+    defined = np.isfinite(ratio)
+    if defined.all() or not defined.any():
+        return ratio
+    return np.interp(t, t[defined], ratio[defined])
+
+
 def minimum_ratio(t: np.ndarray, ratio: np.ndarray) -> tuple[float, float]:
     """(min T/N, time of the minimum in s); (nan, nan) for an empty series."""
     ratio = np.asarray(ratio, dtype=float)

@@ -108,7 +108,7 @@ def _fail(path: str, message: str) -> RunFormatError:
     return RunFormatError(f"{path}: {message}")
 
 
-def _read_array(file: Any, path: str, name: str) -> np.ndarray:
+def _read_array(file: Any, path: str, name: str, allow_nan: bool = False) -> np.ndarray:
     if name not in file:
         raise _fail(path, f"dataset '{name}' is missing (malformed run file)")
     node = file[name]
@@ -117,7 +117,8 @@ def _read_array(file: Any, path: str, name: str) -> np.ndarray:
     data = np.asarray(node[()])
     if not np.issubdtype(data.dtype, np.number):
         raise _fail(path, f"dataset '{name}' is not numeric (dtype {data.dtype})")
-    if not np.all(np.isfinite(data)):
+    finite = np.isfinite(data) | (np.isnan(data) if allow_nan else False)
+    if not np.all(finite):
         raise _fail(path, f"dataset '{name}' holds non-finite values")
     return data
 
@@ -208,8 +209,12 @@ def load_run(path: str | Path) -> RunData:
             fields[name] = data.astype(np.int8) if name == "state" else data.astype(float)
         interface = InterfaceFields(x=x, t=t, **fields)
         # 4. Global series.
-        series = {name: _read_array(file, path, f"/global/{name}").astype(float)
+        # T/N is NaN (undefined) exactly where the whole interface is open (N = 0), nowhere else.
+        series = {name: _read_array(file, path, f"/global/{name}", allow_nan=name == "T_over_N").astype(float)
                   for name in _GLOBAL_SERIES}
+        undefined = np.isnan(series["T_over_N"])
+        if series["N"].shape == undefined.shape and np.any(series["N"][undefined] != 0):
+            raise _fail(path, "dataset '/global/T_over_N' is NaN where N != 0")
         n_steps = series["t"].size
         bad = [name for name, data in series.items() if data.shape != (n_steps,)]
         if bad or n_steps < 1:

@@ -186,8 +186,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         cel.find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
 
     # 5. T/N: minimum, inversion, frictional drops.
-    min_ratio, t_min_ratio = inversion.minimum_ratio(series.t, series.T_over_N)
-    drops = inversion.frictional_drops(series.t, series.T_over_N, settings.drop_rel * f,
+    ratio = inversion.bridge_undefined(series.t, series.T_over_N)
+    min_ratio, t_min_ratio = inversion.minimum_ratio(series.t, ratio)
+    drops = inversion.frictional_drops(series.t, ratio, settings.drop_rel * f,
                                        smooth_time=H / c_s)
     first = drops[0] if drops else None
 

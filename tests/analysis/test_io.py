@@ -70,6 +70,13 @@ def test_rejects_inconsistent_shapes_and_values(run_file):
     path = run_file(paper_case(), name="nan.h5")
     with h5py.File(path, "a") as file:
         file["/global/T_over_N"][5] = np.nan
+    with pytest.raises(RunFormatError, match="NaN where N != 0"):
+        load_run(path)
+    with h5py.File(path, "a") as file:  # the whole interface open: N = 0, T/N undefined, accepted
+        file["/global/N"][5] = 0.0
+    assert np.isnan(load_run(path).global_series.T_over_N[5])
+    with h5py.File(path, "a") as file:
+        file["/global/T"][5] = np.inf
     with pytest.raises(RunFormatError, match="non-finite"):
         load_run(path)
     path = run_file(paper_case(), name="period.h5")

@@ -97,3 +97,13 @@ def test_drops_are_found_on_the_smoothed_series():
     assert len(drops) == 1
     assert drops[0].t_start == pytest.approx(300.0, abs=10.0) and drops[0].t_bottom == pytest.approx(600.0, abs=10.0)
     assert drops[0].T_over_N_start == pytest.approx(1.5, abs=1e-3)
+
+
+def test_undefined_T_over_N_is_bridged_from_its_neighbours():
+    from analysis import inversion
+
+    t = np.arange(5.0)
+    ratio = np.array([1.0, 0.5, np.nan, -0.5, 0.0])
+    bridged = inversion.bridge_undefined(t, ratio)
+    assert bridged[2] == pytest.approx(0.0) and np.isfinite(bridged).all()
+    assert inversion.minimum_ratio(t, bridged) == (-0.5, 3.0)
