@@ -1,0 +1,54 @@
+"""Table of method variants over the published Table-1 cells (reproduction campaign).
+
+Usage: make_variants.py LABEL=results/<sweep>/table/summary.json ... -o generated/variants.tex
+
+Each summary.json is what `python3 -m analysis aggregate` wrote for one variant sweep (the 38 published
+cells at one resolution with one modelling choice changed). The table lists, per variant, the cells
+measured, the published signs and regimes kept, the cells within tolerance and the median deviation,
+so that the report quotes no hand-typed number.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+
+
+def row(label: str, summary: dict) -> str:
+    median = 100 * summary["median_abs_deviation"]
+    return (f"{label} & {summary['cells_compared']} & {summary['sign_matches']} & "
+            f"{summary['regime_matches']} & {summary['within_tolerance']} & {median:.1f}\\,\\% \\\\")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("variants", nargs="+", metavar="LABEL=SUMMARY_JSON")
+    parser.add_argument("-o", "--output", required=True)
+    args = parser.parse_args(argv)
+    lines = [r"\begin{tabular}{lrrrrr}", r"\toprule",
+             r"variant & measured & signs & regimes & within 5\,\% & median dev. \\", r"\midrule"]
+    for item in args.variants:
+        label, sep, path = item.rpartition("=")  # the label may contain "=", the path does not
+        if not sep:
+            print(f"make_variants.py: error: {item!r} is not LABEL=SUMMARY_JSON", file=sys.stderr)
+            return 2
+        try:
+            with open(path) as stream:
+                lines.append(row(label.replace("_", r"\_"), json.load(stream)))
+        except (OSError, KeyError, ValueError) as error:
+            print(f"make_variants.py: error: {path}: {error}", file=sys.stderr)
+            return 2
+    lines += [r"\bottomrule", r"\end{tabular}", ""]
+    directory = os.path.dirname(os.path.abspath(args.output))
+    os.makedirs(directory, exist_ok=True)
+    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
+        out.write("\n".join(lines))
+    os.replace(out.name, args.output)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
