@@ -26,6 +26,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from analysis import theory
+
 
 @dataclass(frozen=True)
 class RunLength:
@@ -37,27 +39,17 @@ class RunLength:
     stop_after_opening: float | None  #: end this long after the first opening, or None
 
 
-def shear_modulus(E: float, nu: float) -> float:
-    """G = E / (2 (1 + nu)) (Pa)."""
-    return E / (2.0 * (1.0 + nu))
-
-
-def shear_wave_speed(E: float, nu: float, rho: float) -> float:
-    """c_s = sqrt(G / rho) (m/s)."""
-    return math.sqrt(shear_modulus(E, nu) / rho)
-
-
-def preload_pressure(E: float, nu: float, Uy_over_H: float) -> float:
-    """p0 = -Uy_over_H E (1 - nu) / ((1 + nu)(1 - 2 nu)) (Pa, compression positive)."""
-    return -Uy_over_H * E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))
+# The formulas live in one place, analysis/theory.py (the measurement side uses the same ones).
+shear_modulus = theory.shear_modulus
+shear_wave_speed = theory.shear_wave_speed
 
 
 def onset_time_estimate(*, E: float, nu: float, rho: float, H: float, f: float,
                         Uy_over_H: float, preshear_ratio: float, V0_over_cs: float) -> float:
     """Quasi-static time (s) at which T/N reaches f, eq. (1) of the module docstring."""
-    G = shear_modulus(E, nu)
-    V0 = V0_over_cs * shear_wave_speed(E, nu, rho)
-    return (1.0 - preshear_ratio) * f * preload_pressure(E, nu, Uy_over_H) * H / (G * V0)
+    return theory.onset_time_estimate(f=f, preshear_ratio=preshear_ratio,
+                                      p0=theory.preload_pressure(Uy_over_H * H, E, nu, H), H=H, E=E, nu=nu,
+                                      V0=V0_over_cs * shear_wave_speed(E, nu, rho))
 
 
 def run_length(*, E: float, nu: float, rho: float, H: float, f: float, Uy_over_H: float,
