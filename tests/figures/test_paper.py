@@ -113,6 +113,11 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
                    "--table1", data / "table1.csv", "-o", gen / "numbers.tex").returncode == 0
     assert command(PAPER / "make_table1.py", data / "table1.csv",
                    "-o", gen / "table1.tex").returncode == 0
+    assert command(PAPER / "make_variants.py", f"default={data / 'summary.json'}",
+                   f"dt = 1 m / c_s={data / 'summary.json'}", "-o", gen / "variants.tex").returncode == 0
+    assert "dt = 1 m / c\\_s" in (gen / "variants.tex").read_text()
+    assert command(PAPER / "make_variants.py", "no-equals-sign", "-o", gen / "bad.tex").returncode == 2
+    assert not (gen / "bad.tex").exists()
     build(paper)
     missing = subprocess.run(["make", "-s", "-C", str(paper), "missing"], capture_output=True,
                              text=True)
