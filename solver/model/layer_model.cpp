@@ -82,8 +82,14 @@ PreloadState solve_preload(const LayerModel& model) {
   s.r = Eigen::VectorXd::Zero(n_c);
   const double u_y_top = c.loading.Uy_over_H * model.d.H;
 
-  // Stage 1: compression.
+  // Stage 1: compression, warm-started from the all-stick answer W r = -q (glued interface, exact
+  // when the whole interface sticks): Gauss-Seidel then only verifies it, instead of needing hundreds
+  // of sweeps from zero that stop at the tolerance, not at round-off.
+  const Eigen::LDLT<Eigen::MatrixXd> W_ldlt = W.ldlt();
   const Eigen::VectorXd zero_contact = Eigen::VectorXd::Zero(n_c);
+  const Eigen::VectorXd q_compression =
+      K_static->solve(Eigen::VectorXd(-(model.K_fd * model.top_displacement(0, u_y_top)))).head(n_c);
+  s.r = -W_ldlt.solve(q_compression);
   Eigen::VectorXd u1 = solve_static(model.top_displacement(0, u_y_top), zero_contact, s.r, s.state,
                                     s.contact_iterations);
   const Eigen::VectorXd r1 = s.r;
@@ -93,7 +99,7 @@ PreloadState solve_preload(const LayerModel& model) {
   // r(U) = r1 + U r_unit with W r_unit = -(free contact displacement of a unit shear). Solve for the U
   // that gives T/N = preshear_ratio * f, then verify with the full contact law.
   const Eigen::VectorXd q_unit = K_static->solve(Eigen::VectorXd(-(model.K_fd * model.top_displacement(1, 0)))).head(n_c);
-  const Eigen::VectorXd r_unit = -W.ldlt().solve(q_unit);
+  const Eigen::VectorXd r_unit = -W_ldlt.solve(q_unit);
   const double target = c.loading.preshear_ratio * c.friction.f;
   const double T1 = -sum_every_other(r1, 0), N1 = sum_every_other(r1, 1);
   const double Tu = -sum_every_other(r_unit, 0), Nu = sum_every_other(r_unit, 1);

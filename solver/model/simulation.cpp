@@ -207,7 +207,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       Ma_next(n_f);
   for (int step = 1; step <= n_steps_max; ++step) {
     const double t = step * dt;
-    if (t > t_end + 0.5 * dt) break;  // stop_after_opening shortened the run
+    // The run ends with the first step that reaches t_end (t_end may have been shortened by
+    // stop_after_opening): the last time is in [t_end, t_end + dt).
+    if ((step - 1) * dt >= t_end - 1e-9 * dt) break;
     if (stop_requested && stop_requested->load()) {
       rec.complete = false;
       rec.end_reason = "interrupted";
