@@ -84,6 +84,7 @@ def run_label(run):
 COLUMN_LABELS = {
     "nu": "$\\nu$", "f": "$f$", "V0_over_cs": "$V_0/c_s$", "lambda_over_H": "$\\lambda/H$",
     "elements_per_H": "$H/h$", "rho": "$\\rho$", "integration": "integration",
+    "dt_times_cs": "$\\Delta t\\, c_s$",
 }
 
 

@@ -22,9 +22,10 @@ PARAMS = {  # axis label, x scale, title
     "rho": ("density $\\rho$ (kg/m$^3$), $\\Delta t \\propto \\sqrt{\\rho}$", "log",
             "Invariance with the density (time step scaled with $\\sqrt{\\rho}$)"),
     "V0_over_cs": ("top shear velocity $V_0/c_s$ (-)", "log", "Dependence on the shear rate"),
+    "dt_times_cs": ("time step $\\Delta t\\, c_s$ (m)", "log2", "Dependence on the time step"),
 }
 REQUIRED = ("nu", "f", "celerity", "min_T_over_N", "max_opening")
-RUN_PARAMETERS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration")
+RUN_PARAMETERS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration", "dt_times_cs")
 COLORS = ["tab:red", "tab:blue", "tab:green", "tab:purple", "tab:orange", "tab:brown", "tab:olive"]
 
 
@@ -39,6 +40,15 @@ def parse_args(argv):
     return parser.parse_args(argv)
 
 
+def with_time_step(rows, path):
+    """Rows with a `dt_times_cs` column (dt c_s in m, the time step in the study's unit) derived
+    from the metrics' `dt` and `c_s` when the table has no such column."""
+    if rows and "dt_times_cs" not in rows[0] and "dt" in rows[0] and "c_s" in rows[0]:
+        for row in rows:
+            row["dt_times_cs"] = round(row["dt"] * row["c_s"], 9)
+    return rows
+
+
 def line_label(key, fixed):
     parts = []
     for column, value in zip(fixed, key):
@@ -51,7 +61,10 @@ def line_label(key, fixed):
 def main(argv=None):
     # 1. Parse options, read the runs, group them into lines along the parameter.
     args = parse_args(argv)
-    rows = select(read_csv(args.metrics, REQUIRED + (args.param,)), args.where, args.metrics)
+    rows = with_time_step(read_csv(args.metrics, REQUIRED), args.metrics)
+    if args.param not in rows[0]:
+        raise InputError(f"{args.metrics}: missing required column {args.param}")
+    rows = select(rows, args.where, args.metrics)
     fixed = [c for c in RUN_PARAMETERS if c != args.param and c in rows[0]]
     lines = {}
     for r in rows:

@@ -51,7 +51,8 @@ def run_config(spec: dict) -> dict:
         "loading": {"Uy_over_H": model["Uy_over_H"], "preshear_ratio": model["preshear_ratio"],
                     "V0_over_cs": point["V0_over_cs"]},
         "friction": {"f": point["f"]},
-        "time": {"t_end": times.t_end, "stop_after_opening": times.stop_after_opening},
+        "time": {"t_end": times.t_end, "stop_after_opening": times.stop_after_opening,
+                 "dt_times_cs": point.get("dt_times_cs", 0.5)},
         "perturbation": {"seed": point["seed"]},
     }
     if snapshots:

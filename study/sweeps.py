@@ -18,10 +18,12 @@ import re
 from pathlib import Path
 
 #: Swept parameters, in the order they appear in a point's name.
-POINT_KEYS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration", "seed")
+POINT_KEYS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration", "seed",
+              "dt_times_cs")
 
-#: Values left out of the name because every point of the paper has them.
-IMPLICIT = {"seed": 1}
+#: Values left out of the name because every point of the paper has them (dt = 0.5 m / c_s: the
+#: paper's time step).
+IMPLICIT = {"seed": 1, "dt_times_cs": 0.5}
 
 
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
@@ -57,6 +59,8 @@ def point_name(point: dict) -> str:
             f"_{point['integration']}")
     if point.get("seed", IMPLICIT["seed"]) != IMPLICIT["seed"]:
         name += f"_seed{point['seed']}"
+    if point.get("dt_times_cs", IMPLICIT["dt_times_cs"]) != IMPLICIT["dt_times_cs"]:
+        name += f"_dt{point['dt_times_cs']:g}"
     return name
 
 
@@ -142,7 +146,8 @@ def varying_keys(points: dict[str, dict]) -> list[str]:
 def label(point: dict, keys: list[str]) -> str:
     """Short legend text, e.g. 'V0/c_s=1e-05' or 'nu=0.20 f=1.50'."""
     symbols = {"nu": "nu", "f": "f", "V0_over_cs": "V0/c_s", "lambda_over_H": "lambda/H",
-               "elements_per_H": "H/h", "rho": "rho", "integration": "", "seed": "seed"}
+               "elements_per_H": "H/h", "rho": "rho", "integration": "", "seed": "seed",
+               "dt_times_cs": "dt c_s"}
     parts = []
     for key in keys:
         value = point[key]

@@ -22,7 +22,7 @@ wildcard_constraints:
 
 FIGURE_EXTS = (".png", ".pdf")
 # figures/convergence.py --param accepts these point parameters.
-CONVERGENCE_PARAMS = ("elements_per_H", "rho", "V0_over_cs")
+CONVERGENCE_PARAMS = ("elements_per_H", "rho", "V0_over_cs", "dt_times_cs")
 
 
 def repo_path(path):
@@ -176,9 +176,10 @@ def tn_highlight(sweep):
 
 
 def convergence_param(sweep):
-    """The one parameter a convergence sweep varies (elements_per_H, rho or V0_over_cs)."""
-    keys = study_sweeps.varying_keys(points(sweep))
-    if len(keys) != 1 or keys[0] not in CONVERGENCE_PARAMS:
+    """The one convergence parameter a sweep varies (other parameters, e.g. nu and f, may vary too:
+    each of their combinations is one line of the plot)."""
+    keys = [key for key in study_sweeps.varying_keys(points(sweep)) if key in CONVERGENCE_PARAMS]
+    if len(keys) != 1:
         raise ValueError(f"sweeps.{sweep}: a convergence plot needs exactly one of {CONVERGENCE_PARAMS} "
                          f"to vary, found {keys}")
     return keys[0]

@@ -140,7 +140,7 @@ def test_solver_overrides_add_keys_but_may_not_redefine_the_study(study_config):
     (name,) = sweeps.sweep_points(study_config, "long")
     entry = spec(study_config, "long", name)
     assert run_config({**entry, "solver": {"contact": {"tolerance": 1e-9}}})["contact"] == {"tolerance": 1e-9}
-    assert run_config(entry)["time"] == {"t_end": 20000.0, "stop_after_opening": None}
+    assert run_config(entry)["time"] == {"t_end": 20000.0, "stop_after_opening": None, "dt_times_cs": 0.5}
     with pytest.raises(ValueError, match="friction.f"):
         run_config({**entry, "solver": {"friction": {"f": 0.3}}})
 
@@ -156,3 +156,12 @@ def test_the_solver_accepts_every_config_of_the_study(study_config, tmp_path):
             path.write_text(json.dumps(run_config(spec(study_config, sweep, name))))
             result = subprocess.run([str(solver), "check", str(path)], capture_output=True, text=True)
             assert result.returncode == 0, f"{sweep}/{name}: {result.stderr}"
+
+
+def test_the_time_step_is_a_point_parameter_named_only_off_the_paper_value(study_config):
+    points = sweeps.sweep_points(study_config, "timestep")
+    names = [name for name, point in points.items() if point["nu"] == 0.2]
+    assert names == ["nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced_dt0.25",
+                     "nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced",
+                     "nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced_dt1"]
+    assert [run_config(spec(study_config, "timestep", name))["time"]["dt_times_cs"] for name in names] == [0.25, 0.5, 1.0]
