@@ -63,7 +63,7 @@ def main(argv=None):
     args = parse_args(argv)
     rows = with_time_step(read_csv(args.metrics, REQUIRED), args.metrics)
     if args.param not in rows[0]:
-        raise InputError(f"{args.metrics}: missing required column {args.param}")
+        raise InputError(f"{args.metrics}: missing required column(s) {args.param}")
     rows = select(rows, args.where, args.metrics)
     fixed = [c for c in RUN_PARAMETERS if c != args.param and c in rows[0]]
     lines = {}
