@@ -5,6 +5,15 @@
 // node exactly with the others frozen; y is updated in place (two columns of W per node), so a sweep
 // costs O(n^2). Warm-started from the r passed in.
 // Convergence: max_k |r_k(new) - r_k(old)| <= tolerance * force_scale over one sweep.
+//
+// Prakash–Clifton bounds (a given bound g_k per closed node) make the local law discontinuous at
+// opening: |r_x| <= g_k while closed, however small r_y, and r = 0 once open. A node at grazing then
+// can have no solution other than the grazing one (u_y = r_y = 0), which exact local solves never hit:
+// through the coupling of W, its friction force opens it, opening removes the force, and it closes
+// again, so the sweeps cycle for ever. A node whose open/closed status has changed more than
+// kMaxStatusChanges times in one solve therefore gets the Coulomb bound f r_y (the Prakash–Clifton
+// strength with the memory relaxed onto the current pressure, continuous at opening) for the rest of
+// that solve. Coulomb problems (empty bounds) are not affected.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -16,7 +25,12 @@ struct GaussSeidelReport {
   int iterations;
   double residual;  ///< last sweep's max reaction change / force_scale
   bool converged;
+  int n_bounds_released = 0;  ///< nodes that fell back from their given bound to f r_y (cycling)
 };
+
+/// Status changes (open <-> closed) of one node in one solve after which its given bound is replaced
+/// by f r_y. Genuine changes during convergence are one or two; cycles repeat without end.
+inline constexpr int kMaxStatusChanges = 4;
 
 struct GaussSeidelSettings {
   double tolerance = 1e-10;
@@ -27,7 +41,8 @@ struct GaussSeidelSettings {
 /// @param W      Delassus operator (2n x 2n, symmetric positive definite)
 /// @param q      free local variables (r = 0)
 /// @param f      friction coefficient
-/// @param bounds if non-empty, a fixed friction bound per node (Prakash–Clifton), else f r_y
+/// @param bounds if non-empty, a fixed friction bound per closed node (Prakash–Clifton), else f r_y;
+///               a cycling node falls back to f r_y (see above)
 /// @param r      in: warm start; out: reactions
 /// @param y      out: local variables q + W r
 /// @param state  out: per-node contact state

@@ -132,6 +132,51 @@ TEST(GaussSeidel, ReportsNonConvergenceAtTheIterationCap) {
   EXPECT_EQ(report.iterations, 3);
 }
 
+// Prakash–Clifton bounds, two nodes, f = 1: no solution exists with the given bounds, so exact local
+// solves cycle (the old behaviour: not converged at any cap). Node 1 slips forward at its bound and
+// presses node 0 shut (gap -0.0014); node 0 closes and slips backward at its bound 0.19, which loads
+// node 1 (r_y1 0.32 -> 0.37), which opens node 0 (gap +0.011), which removes its force, and so on.
+// After kMaxStatusChanges changes node 0 gets the Coulomb bound f r_y and the solve converges.
+TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
+  Eigen::MatrixXd W(4, 4);
+  W << 1.09, 0.00, -0.24, -0.32,
+       0.00, 1.19, 0.22, 0.27,
+       -0.24, 0.22, 1.17, 0.00,
+       -0.32, 0.27, 0.00, 1.27;
+  const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.73, -0.06, 0.43, -0.41).finished();
+  const std::vector<double> bounds{0.19, 0.13};
+  const double f = 1.0;
+  const Eigen::Matrix2d D0 = W.block<2, 2>(0, 0), D1 = W.block<2, 2>(2, 2);
+  // No solution with the given bounds: node 0 open leaves it a negative gap; node 0 closed must slip
+  // backward at r_x0 = +0.19 (sticking needs r_x0 = 0.75), and then its gap is positive even at r_y0 = 0.
+  const auto node1_open0 = solve_local_coulomb(D1, q.segment<2>(2), f, bounds[1]);
+  const double gap0_open = q(1) + W.block<1, 2>(1, 2).dot(node1_open0.r);
+  EXPECT_LT(gap0_open, 0.0);
+  const Eigen::Vector2d r0_slip(bounds[0], 0.0);
+  const auto node1_slip0 = solve_local_coulomb(D1, q.segment<2>(2) + W.block<2, 2>(2, 0) * r0_slip, f, bounds[1]);
+  const double gap0_slip = q(1) + W.block<1, 2>(1, 0).dot(r0_slip) + W.block<1, 2>(1, 2).dot(node1_slip0.r);
+  EXPECT_GT(gap0_slip, 0.0);
+  const double r_x0_stick = -(q(0) + W.block<1, 2>(0, 2).dot(node1_slip0.r)) / D0(0, 0);  // du_x0 = 0
+  EXPECT_GT(r_x0_stick, bounds[0]);
+
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(4), y;
+  std::vector<ContactState> state;
+  const auto report = solve_contact_gauss_seidel(W, q, f, bounds, {1e-14, 2000, 1.0}, r, y, state);
+  ASSERT_TRUE(report.converged);
+  EXPECT_LE(report.iterations, 30);
+  EXPECT_EQ(report.n_bounds_released, 1);
+  // node 0: Coulomb, slipping backward at f r_y0 with a closed gap; node 1: slipping forward at its bound
+  EXPECT_EQ(state[0], ContactState::slip);
+  EXPECT_GT(r(1), 0.0);
+  EXPECT_NEAR(r(0), f * r(1), 1e-14);
+  EXPECT_LT(y(0), 0.0);
+  EXPECT_NEAR(y(1), 0.0, 1e-13);
+  EXPECT_EQ(state[1], ContactState::slip);
+  EXPECT_DOUBLE_EQ(r(2), -bounds[1]);
+  EXPECT_GT(y(2), 0.0);
+  EXPECT_NEAR(y(3), 0.0, 1e-13);
+}
+
 // On the real Delassus operator of a small layer, uniform compression q = (0, -g) per node: every
 // node closes and sticks with the same reaction (translation invariance).
 TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {

@@ -184,6 +184,21 @@ TEST(Smoke, Nu02F15OpeningPulsesRunForwardH16) { check_opening_pulses_forward(16
 TEST(Smoke, Nu02F15OpeningPulsesRunForwardH32) { check_opening_pulses_forward(32); }
 TEST(Smoke, Nu02F15OpeningPulsesRunForwardH64) { check_opening_pulses_forward(64); }
 TEST(Smoke, Nu02F15OpeningPulsesRunForwardH128) { check_opening_pulses_forward(128); }
+// Prakash–Clifton (L = 0.5 m, v* = 1 m/s) at nu = 0.2, f = 1.5, H/64: at t = 1648 s a node at grazing
+// made the contact sweeps cycle for ever (contact_not_converged; contact/gauss_seidel.hpp). Runs through.
+TEST(Smoke, PrakashCliftonRunsThroughGrazingH64) {
+  const RunConfig config = testing::make_config(
+      {{"material", {{"nu", 0.2}}},
+       {"friction", {{"f", 1.5}, {"regularization", "prakash_clifton"}, {"pc_length", 0.5}, {"pc_velocity", 1.0}}},
+       {"mesh", {{"elements_per_H", 64}}},
+       {"time", {{"t_end", 1700.0}}}});
+  const RunRecord rec = simulate(LayerModel(config));
+  EXPECT_TRUE(rec.complete);
+  EXPECT_EQ(rec.end_reason, "t_end");
+  EXPECT_GT(rec.t_first_opening, 0);
+  EXPECT_LE(*std::max_element(rec.global.contact_iterations.begin(), rec.global.contact_iterations.end()), 100);
+}
+
 TEST(Smoke, Nu02F08SlipWithoutOpeningH16) { check_no_opening(16); }
 TEST(Smoke, Nu02F08SlipWithoutOpeningH32) { check_no_opening(32); }
 TEST(Smoke, Nu02F08SlipWithoutOpeningH64) { check_no_opening(64); }
