@@ -3,8 +3,8 @@
 #   snakemake -c2                 the default study `quick` (a few minutes)
 #   snakemake -c2 all             every sweep of the paper, figures, report, paper PDF
 #   snakemake -c2 <sweep>         one sweep (table1, shear_rate, period, mesh, density, long,
-#                                 snapshots, quick, ci, table1_ci) with its table and figures
-#   snakemake -c2 reference_check Table 1 at H/32 against the published values (CI)
+#                                 snapshots, quick, ci, table1_ci, ...) with its table and figures
+#   snakemake -c2 reference_check Table 1 at H/64 against the published values (CI)
 #
 # Wiring only: the study is declared in study/config.yaml (schema study/config.schema.yaml), the
 # rules live in study/rules/*.smk, the logic in study/*.py. See study/README.md.

@@ -14,11 +14,11 @@ from typing import Any
 import numpy as np
 
 from analysis import celerity as cel
-from analysis import energy, inversion, opening, pulses, regime, theory
+from analysis import dissipation, energy, inversion, opening, pulses, regime, theory
 from analysis.io import RunData
 
 #: Version of the measurement definitions, written into every metrics file.
-ANALYSIS_VERSION = "1"
+ANALYSIS_VERSION = "2"
 
 #: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
 QUALITY_AGREEMENT = 0.02
@@ -49,7 +49,10 @@ class Settings:
     """Measurement settings (all documented in analysis/README.md).
 
     threshold_rel: slip-velocity threshold / V0; opening_rel: opening threshold / |Uy|;
-    window_length (s); major_duration (s); min_speed_rel: slowest front / c_s;
+    window_length, major_duration: in seconds of the paper's time unit (E = 1000 Pa,
+    rho = 1000 kg/m^3), scaled for each run by its own unit sqrt(rho / E) (`time_unit_ratio`), so
+    that runs similar to the paper's up to rho or E are measured over the similar window;
+    min_speed_rel: slowest front / c_s;
     onset_rel: slip velocity / V0 that marks the first slip; drop_rel: smallest frictional drop / f;
     sensitivity_threshold_factor: the threshold of the sensitivity re-measurement / threshold.
     """
@@ -71,6 +74,17 @@ class Settings:
                     if not getattr(self, name) > 0]
         if problems:
             raise ValueError("; ".join(problems))
+
+
+#: E (Pa) and rho (kg/m^3) of the paper: the time unit in which the windows are given.
+PAPER_E, PAPER_RHO = 1000.0, 1000.0
+
+
+def time_unit_ratio(E: float, rho: float) -> float:
+    """sqrt(rho / E) of a run over the paper's: every time of the problem scales with it (c_s and
+    c_l go as sqrt(E / rho), and dt = dt_times_cs / c_s follows), so a window of 200 s in the paper
+    is 200 s times this ratio in the run."""
+    return math.sqrt((rho / PAPER_RHO) / (E / PAPER_E))
 
 
 def _parameters(run: RunData) -> dict[str, Any]:
@@ -155,8 +169,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     threshold = settings.threshold_rel * V0
     min_speed = settings.min_speed_rel * c_s
     front_map = cel.find_edges(x, t, v, threshold)
-    kw = dict(min_speed=min_speed, window_length=settings.window_length,
-              major_duration=settings.major_duration)
+    unit = time_unit_ratio(E, float(parameters["rho"]))
+    window_length, major_duration = settings.window_length * unit, settings.major_duration * unit
+    kw = dict(min_speed=min_speed, window_length=window_length, major_duration=major_duration)
     result = cel.celerity_from_fronts(front_map, **kw)
     c_p = result.celerity
     xcorr = (cel.celerity_by_xcorr(x, t, v, result.window) if result.window is not None
@@ -168,7 +183,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     behind = inside_slip = None
     major_same_direction = [track for track, direction in
                             cel.major_fronts(front_map, min_speed=min_speed,
-                                             major_duration=settings.major_duration)
+                                             major_duration=major_duration)
                             if direction == result.direction != 0]
     if opened.opened:
         k = int(np.flatnonzero(t == opened.t_first)[0])
@@ -191,15 +206,31 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     drops = inversion.frictional_drops(series.t, ratio, settings.drop_rel * f,
                                        smooth_time=H / c_s)
     first = drops[0] if drops else None
+    later_starts = [d.T_over_N_start for d in drops[1:]]
 
     # 6. Pulse train, regime, category, energy.
-    count, spacing = pulses.pulse_train(result.fronts, front_map.grid.period)
+    count_all, spacing_all = pulses.pulse_train(result.fronts, front_map.grid.period)
+    # Major pulses weighed by what they open over their life; on the slip velocity if never open.
+    major, major_field = pulses.MajorPulses(0, math.nan), None
+    if math.isfinite(c_p):
+        major_field = "opening" if opened.opened else "slip_velocity"
+        major = (pulses.major_pulses(x, t, interface.opening, open_threshold, c_p) if opened.opened
+                 else pulses.major_pulses(x, t, v, threshold, c_p))
+
+    # 7. Frictional dissipation per unit slip: during opening, and from the onset to the opening.
+    window = dict(t_global=series.t, dissipation=series.dissipation_friction,
+                  work=series.work_external, elastic=series.energy_elastic, t_interface=t,
+                  slip=interface.slip, normal_force=p0 * front_map.grid.period)
+    t_last = float(t[-1])
+    during = dissipation.window_dissipation(t0=opened.t_first, t1=t_last, **window)
+    before = dissipation.window_dissipation(
+        t0=onset_time, t1=opened.t_first if opened.opened else t_last, **window)
     spacing_theory = theory.pulse_spacing(c_p, c_s, H)
     inverted = bool(min_ratio < 0)
     balance_error, residual_max = energy.energy_balance_error(
         series.energy_kinetic, series.energy_elastic, series.work_external,
         series.dissipation_friction, series.energy_balance_residual)
-    spacing_limit = spacing if math.isfinite(spacing) else front_map.grid.period
+    spacing_limit = spacing_all if math.isfinite(spacing_all) else front_map.grid.period
     agreement = abs(_relative(xcorr.celerity, c_p))
     aliasing_risk = (bool(result.frame_shift > ALIASING_FRACTION * spacing_limit)
                      if math.isfinite(result.frame_shift) else None)
@@ -210,7 +241,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
             ("unsteady", not abs(result.drift) <= QUALITY_DRIFT),
             ("aliasing_risk", aliasing_risk),
             ("counter_fronts", result.n_counter_fronts > 0),
-            ("short_window", result.window[1] - result.window[0] < 0.5 * settings.window_length),
+            ("short_window", result.window[1] - result.window[0] < 0.5 * window_length),
         ) if bad]
         quality = ";".join(concerns) or "ok"
 
@@ -226,7 +257,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "lambda": front_map.grid.period, "dx": front_map.grid.dx,
         "output_interval": front_map.output_interval,
         "slip_threshold": threshold, "threshold_rel": settings.threshold_rel,
-        "window_length": settings.window_length, "major_duration": settings.major_duration,
+        "window_length": window_length, "major_duration": major_duration,
         "onset_time": onset_time,
         "onset_time_estimate": onset_estimate,
         "celerity": c_p,
@@ -273,14 +304,29 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "first_drop_start_T_over_N": first.T_over_N_start if first else math.nan,
         "first_drop_bottom_time": first.t_bottom if first else math.nan,
         "first_drop_bottom_T_over_N": first.T_over_N_bottom if first else math.nan,
-        "later_drops_start_T_over_N": [d.T_over_N_start for d in drops[1:]],
+        "later_drops_start_T_over_N": later_starts,
+        "later_drops_start_T_over_N_median": (float(np.median(later_starts)) if later_starts
+                                              else math.nan),
+        "n_complete_drops": sum(d.complete for d in drops),
         "category": regime.category(slipped=front_map.n_slipping_frames > 0,
                                     has_front=front_map.n_edge_frames > 0, opened=opened.opened,
                                     celerity=c_p, c_s=c_s, c_l=c_l, inversion=inverted),
-        "pulse_count": count,
-        "pulse_spacing": spacing,
+        "pulse_count": major.count if major_field else None,
+        "pulse_spacing": major.spacing,
+        "pulse_count_field": major_field,
+        "pulse_major_strengths": list(major.strengths),
+        "pulse_next_strength": major.next_strength,
+        "pulse_count_all": count_all,
+        "pulse_spacing_all": spacing_all,
         "pulse_spacing_theory": spacing_theory,
         "pulse_count_theory": pulses.expected_pulse_count(front_map.grid.period, spacing_theory),
+        "dissipative_friction_opening": during.mu_diss,
+        "friction_work_ratio_opening": during.work_fraction,
+        "friction_energy_share_opening": during.energy_share,
+        "dissipative_friction_before_opening": before.mu_diss,
+        "friction_work_ratio_before_opening": before.work_fraction,
+        "dissipation_window_opening": [during.t0, during.t1],
+        "dissipation_window_before_opening": [before.t0, before.t1],
         "energy_balance_error": balance_error,
         "energy_balance_residual_max": residual_max,
         "contact_residual_max": float(np.max(series.contact_residual)),

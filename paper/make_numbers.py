@@ -17,6 +17,8 @@ Inputs (each optional; a macro whose input is absent expands to \\notavailable):
   are the rows at nu = 0.2, f = 1.5 that differ from the reference in that one parameter only
   (one run per value: the first listed).
 - table1.csv (--table1): the published celerity of the reference cell.
+- flutter.txt (--flutter, `python3 -m analysis flutter-boundary`: lines 'nu f_lower f_upper'):
+  where the grid's opening runs sit against the flutter wedge of steady sliding.
 
 Only selection and formatting happen here; every measured value comes from the inputs.
 """
@@ -28,7 +30,7 @@ import os
 import sys
 from collections import Counter
 
-REFERENCE = dict(nu=0.2, f=1.5, V0_over_cs=1e-5, lambda_over_H=2.0, rho=1000.0)
+REFERENCE = dict(nu=0.2, f=1.5, V0_over_cs=1e-5, lambda_over_H=2.0, rho=1000.0, dt_times_cs=0.5)
 SETUP_DEFAULTS = dict(E=1000.0, rho=1000.0, H=25.0, Uy_over_H=-0.001, preshear_ratio=0.95,
                       hht_alpha=0.1, dt_times_cs=0.5)
 SUMMARY_KEYS = {  # macro: (aliases, kind); kind 'count' or 'fraction'
@@ -247,13 +249,71 @@ def metrics_macros(rows, E):
     return m
 
 
+def read_flutter(path):
+    """[(nu, f_lower, f_upper)] of the flutter boundary (nan: no wedge at that nu)."""
+    try:
+        with open(path) as stream:
+            lines = [line.split() for line in stream if line.strip() and not line.startswith("#")]
+        return [tuple(float(x) for x in fields[:3]) for fields in lines]
+    except (OSError, ValueError, IndexError) as err:
+        raise InputError(f"{path}: not a flutter boundary 'nu f_lower f_upper' ({err})") from None
+
+
+def inside_wedge(boundary, nu, f):
+    """True when (nu, f) lies strictly inside the flutter wedge, bounds interpolated linearly in nu;
+    None when nu is outside the tabulated range."""
+    below = [b for b in boundary if b[0] <= nu + 1e-12]
+    above = [b for b in boundary if b[0] >= nu - 1e-12]
+    if not below or not above:
+        return None
+    a, b = below[-1], above[0]
+    w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
+    lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
+                    else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
+    return math.isfinite(lower) and lower < f < (upper if not math.isnan(upper) else -math.inf)
+
+
+def wedge_macros(rows, boundary):
+    """Counts of the grid runs inside/outside the flutter wedge, with and without opening."""
+    ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
+    grid = [r for r in rows if matches(r, **ref)]
+    meshes = Counter(r.get("elements_per_H") for r in grid)
+    if meshes:
+        grid = [r for r in grid if close(r.get("elements_per_H"), meshes.most_common(1)[0][0])]
+    names = ("nInsideWedge", "nOpeningInsideWedge", "nOutsideWedge", "nOpeningOutsideWedge")
+    if not grid or not boundary:
+        return {k: None for k in names}
+    inside = [r for r in grid if inside_wedge(boundary, r["nu"], r["f"])]
+    outside = [r for r in grid if inside_wedge(boundary, r["nu"], r["f"]) is False]
+    return dict(zip(names, (num(len(inside)), num(sum(r.get("opening") is True for r in inside)),
+                            num(len(outside)), num(sum(r.get("opening") is True for r in outside)))))
+
+
+def direction_switch_macros(rows):
+    """For nu = 0.45 and 0.49: the largest f of the grid with a backward front and the smallest
+    larger f with a forward one (the paper: back to +x at higher f)."""
+    ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
+    grid = [r for r in rows if matches(r, **ref) and isinstance(r.get("celerity"), float)
+            and math.isfinite(r["celerity"])]
+    meshes = Counter(r.get("elements_per_H") for r in grid)
+    if meshes:
+        grid = [r for r in grid if close(r.get("elements_per_H"), meshes.most_common(1)[0][0])]
+    macros = {}
+    for nu, name in ((0.45, "switchFNuFortyFive"), (0.49, "switchFNuFortyNine")):
+        cells = sorted((r["f"], r["celerity"]) for r in grid if close(r["nu"], nu))
+        backward = [f for f, c in cells if c < 0]
+        forward = [f for f, c in cells if c > 0 and backward and f > max(backward)]
+        macros[name] = (f"{num(max(backward))}--{num(min(forward))}" if backward and forward else None)
+    return macros
+
+
 def published_macros(rows):
     hit = [r for r in rows if close(r["nu"], REFERENCE["nu"]) and close(r["f"], REFERENCE["f"])]
     value = hit[0]["published"] if hit else None
     return {"publishedReference": num(value, decimals=3) if isinstance(value, float) else None}
 
 
-def all_macros(summary_path=None, metrics_path=None, table1_path=None, E=1000.0):
+def all_macros(summary_path=None, metrics_path=None, table1_path=None, E=1000.0, flutter_path=None):
     summary = read_summary(summary_path) if summary_path else None
     rows = read_rows(metrics_path, ("nu", "f", "category", "celerity", "regime",
                                     "min_T_over_N")) if metrics_path else []
@@ -265,6 +325,8 @@ def all_macros(summary_path=None, metrics_path=None, table1_path=None, E=1000.0)
                   {k: None for k in metrics_macros([], E)})
     table = read_rows(table1_path, ("nu", "f", "published")) if table1_path else []
     macros.update(published_macros(table))
+    macros.update(wedge_macros(rows, read_flutter(flutter_path) if flutter_path else []))
+    macros.update(direction_switch_macros(rows))
     return macros
 
 
@@ -282,15 +344,16 @@ def main(argv=None):
     parser.add_argument("summary", nargs="?", help="summary.json of the Table 1 comparison")
     parser.add_argument("metrics", nargs="?", help="all_metrics.csv, one row per run")
     parser.add_argument("--table1", help="table1.csv (for the published value of the reference cell)")
+    parser.add_argument("--flutter", help="flutter.txt, the flutter boundary 'nu f_lower f_upper' per line")
     parser.add_argument("--E", type=float, default=1000.0, help="Young's modulus when no c_s column")
     parser.add_argument("-o", "--output", required=True, help="numbers.tex to write")
     args = parser.parse_args(argv)
     try:
-        macros = all_macros(args.summary, args.metrics, args.table1, args.E)
+        macros = all_macros(args.summary, args.metrics, args.table1, args.E, args.flutter)
     except InputError as err:
         print(f"make_numbers.py: error: {err}", file=sys.stderr)
         return 2
-    sources = [p for p in (args.summary, args.metrics, args.table1) if p]
+    sources = [p for p in (args.summary, args.metrics, args.table1, args.flutter) if p]
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     with open(args.output, "w") as stream:
         stream.write(render(macros, sources))

@@ -1,6 +1,6 @@
 # Study reports (our own HTML: Snakemake 7.21's --report needs internet) and the LaTeX paper.
 
-localrules: sweep_report, report, paper_figure, paper_numbers, paper
+localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper
 
 
 def report_inputs(sweeps):
@@ -77,6 +77,7 @@ rule paper_numbers:
         summary="results/study/table/summary.json",
         metrics="results/study/table/all_metrics.csv",
         table="results/study/table/table1.csv",
+        flutter="results/theory/flutter.txt",
     output:
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
@@ -84,12 +85,13 @@ rule paper_numbers:
     log: "logs/paper_numbers.log"
     shell:
         "({PYTHON} {input.numbers_script} {input.summary} {input.metrics} --table1 {input.table}"
+        " --flutter {input.flutter}"
         " -o {output.numbers} && {PYTHON} {input.table_script} {input.table} -o {output.table}"
         " --tolerance {params.tolerance}) > {log} 2>&1"
 
 
 VARIANTS = {  # label in the report -> sweep (study/config.yaml): one modelling choice changed each
-    "paper defaults (reduced+ASQBI, alpha weighting, dt=0.5/c_s, seed 1)": "table1_ci",
+    "paper defaults (reduced+ASQBI, alpha weighting, dt=0.5/c_s, seed 1)": "table1_h32",
     "full 2x2 integration": "variant_full",
     "1-point, no hourglass control": "variant_reduced_pure",
     "contact forces at n+1 only": "variant_contact_end",
@@ -109,6 +111,31 @@ rule paper_variants:
     shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
 
 
+def paper_table_sets(name):
+    """[(label, sweep)] of one report table (config `paper.tables`)."""
+    return list(config["paper"]["tables"][name]["sets"].items())
+
+
+rule paper_table:
+    """A table of the report: per-run metrics of sweeps, or the published cells at several meshes."""
+    input:
+        script=lambda wc: ("paper/make_resolution_table.py" if config["paper"]["tables"][wc.name]["resolution"]
+                           else "paper/make_sweep_table.py"),
+        tables=lambda wc: [f"results/{sweep}/table/" + ("table1.csv" if config["paper"]["tables"][wc.name]["resolution"]
+                                                        else "all_metrics.csv")
+                           for _, sweep in paper_table_sets(wc.name)],
+    output: "paper/generated/{name}.tex"
+    wildcard_constraints: name="|".join(config["paper"]["tables"]) or "no-table"
+    params:
+        sets=lambda wc, input: " ".join(shlex.quote(f"{label}={path}")
+                                        for (label, _), path in zip(paper_table_sets(wc.name), input.tables)),
+        options=lambda wc: ("--tolerance " + str(config["reference"]["tolerance"])
+                            if config["paper"]["tables"][wc.name]["resolution"]
+                            else "--columns " + " ".join(config["paper"]["tables"][wc.name]["columns"])),
+    log: "logs/paper_table_{name}.log"
+    shell: "{PYTHON} {input.script} {params.sets} {params.options} -o {output} > {log} 2>&1"
+
+
 rule paper:
     """The LaTeX reproduction report (paper/reproduction.tex): every number, table and figure from
     generated files. Built in the checkout (paper/ is not copied under --directory)."""
@@ -118,6 +145,7 @@ rule paper:
         table="paper/generated/table1.tex",
         variants="paper/generated/variants.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
+        tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
     output: PAPER_PDF
     log: "logs/paper.log"
     shell: "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex} > {log} 2>&1"

@@ -73,7 +73,7 @@ def ratchet_known_mismatches(wildcards, input):
 
 
 rule reference_check:
-    """CI gate: Table 1 regenerated at H/32 must keep every published sign and regime and at least the
+    """CI gate: Table 1 regenerated at the check sweep's resolution (H/64) must keep every published sign and regime and at least the
     ratchet's count of cells within tolerance (study/reference/ratchet.json; raise it, never lower it)."""
     input:
         table=f"results/{config['reference']['check_sweep']}/table/table1.csv",

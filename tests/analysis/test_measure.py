@@ -50,6 +50,11 @@ def test_paper_case(run_file):
     assert m["first_drop_bottom_T_over_N"] == pytest.approx(-0.2, abs=0.05)
     # One pulse in lambda = 2H; theory l = 2H sqrt(c^2/c_s^2 - 1) = 46.6 m -> 1 pulse.
     assert m["pulse_count"] == 1 and m["pulse_spacing"] == pytest.approx(50.0)
+    assert m["pulse_count_field"] == "opening" and m["pulse_count_all"] == 1
+    # One drop: no later drop to take a median of; the synthetic dissipation is 0.5 W_ext.
+    assert m["later_drops_start_T_over_N_median"] is None and m["n_complete_drops"] == 1
+    assert m["friction_work_ratio_opening"] == pytest.approx(0.5, rel=1e-6)
+    assert m["dissipation_window_opening"][0] == m["first_opening_time"]
     assert m["pulse_spacing_theory"] == pytest.approx(46.6, abs=0.3) and m["pulse_count_theory"] == 1
     assert m["energy_balance_error"] == pytest.approx(1e-4, rel=1e-3)
     assert m["nu"] == 0.2 and m["f"] == 1.5 and m["elements_per_H"] == 32 and m["rho"] == 1000.0
@@ -91,8 +96,9 @@ def test_regime_of_the_measured_celerity(run_file):
 def test_two_pulses_in_lambda_4H(run_file):
     m = measure(run_file, Scenario(lambda_over_H=4.0, pulses=[Pulse(0.88, x_front=10.0),
                                                               Pulse(0.88, x_front=55.0)]))
-    assert m["pulse_count"] == 2
+    assert m["pulse_count"] == 2 and m["pulse_count_field"] == "slip_velocity"
     assert m["pulse_spacing"] == pytest.approx(50.0, abs=5.1)  # gaps of 45 and 55 m
+    assert m["pulse_count_all"] == 2
     assert m["celerity_n_fronts"] == 2 and m["celerity"] == pytest.approx(0.88, rel=5e-3)
 
 
@@ -104,6 +110,8 @@ def test_later_drops(run_file):
     m = measure(run_file, scenario)
     assert m["n_drops"] == 3
     assert m["later_drops_start_T_over_N"] == pytest.approx([1.02, 0.99], abs=3e-3)
+    assert m["later_drops_start_T_over_N_median"] == pytest.approx(1.005, abs=3e-3)
+    assert m["n_complete_drops"] == 3  # the last one recovers from 0.2 to 0.5 > 0.1 f
     assert m["first_drop_bottom_T_over_N"] == pytest.approx(-0.1, abs=3e-3)
     assert m["min_T_over_N"] == pytest.approx(-0.2, abs=3e-3)  # raw: with the chatter
 
@@ -129,3 +137,18 @@ def test_window_sensitivity_is_reported(run_file):
     assert m["celerity_opening_window"] == pytest.approx(0.90, rel=5e-3)
     assert m["celerity_window_sensitivity"] == pytest.approx(m["celerity_opening_window"] / m["celerity"] - 1)
     assert math.isfinite(m["celerity_drift"]) and m["celerity_drift"] > 0.02
+
+
+def test_windows_are_in_the_paper_time_unit():
+    """Every time of the problem scales with sqrt(rho / E): the 200 s window of the paper (E = 1000 Pa,
+    rho = 1000 kg/m^3) is 2 s at rho = 0.1 and 100 s at E = 4000 Pa."""
+    from analysis.measure import time_unit_ratio
+
+    assert time_unit_ratio(1000.0, 1000.0) == 1.0
+    assert time_unit_ratio(1000.0, 0.1) == pytest.approx(0.01)
+    assert time_unit_ratio(4000.0, 1000.0) == pytest.approx(0.5)
+
+
+def test_the_paper_window_is_200_s(run_file):
+    m = measure(run_file, paper_case())
+    assert m["window_length"] == 200.0 and m["major_duration"] == 100.0

@@ -57,16 +57,17 @@ def test_sweep_sizes(study_config):
     size = {name: len(sweeps.sweep_points(study_config, name, REPO)) for name in study_config["sweeps"]}
     assert size["table1"] == 98
     assert size["shear_rate"] == 5 and size["period"] == 3 and size["mesh"] == 3 and size["density"] == 3
-    assert size["table1_ci"] == 38
+    assert size["table1_ci"] == 38 and size["table1_h32"] == 38
     assert 3 <= size["quick"] <= 6 and size["ci"] <= 3
 
 
-def test_table1_ci_holds_exactly_the_published_cells_at_H32(study_config):
-    points = sweeps.sweep_points(study_config, "table1_ci", REPO)
+@pytest.mark.parametrize("sweep, resolution", [("table1_ci", 64), ("table1_h32", 32)])
+def test_reference_sweeps_hold_exactly_the_published_cells(study_config, sweep, resolution):
+    points = sweeps.sweep_points(study_config, sweep, REPO)
     with open(REPO / "study" / "reference" / "table1_celerity.csv") as stream:
         published = {(float(r["nu"]), float(r["f"])) for r in csv.DictReader(stream)}
     assert {(p["nu"], p["f"]) for p in points.values()} == published
-    assert {p["elements_per_H"] for p in points.values()} == {32}
+    assert {p["elements_per_H"] for p in points.values()} == {resolution}
 
 
 def test_quick_and_ci_are_coarse(study_config):

@@ -35,10 +35,10 @@ def test_quick_is_the_default_target(workdir):
     assert quick["simulate"] == 4 and quick["sweep_report"] == 1 and quick["fig_phase_diagram"] == 1
 
 
-# The paper's sweeps, plus the published cells at H/32 with the default method and with one modelling
-# choice changed each (the method-variant table of the reproduction report).
+# The paper's sweeps, plus the published cells at H/32 with the default
+# method and with one modelling choice changed each (the method-variant table of the reproduction report).
 SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1,
-               "table1_ci": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
+               "table1_h32": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
                "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 14,
                "regularized_fast": 3, "regularized_mid": 3, "regularized_slow": 3}
 
@@ -69,7 +69,8 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     result, counts = dry(REPO, "all", "--forceall")
     assert simulations_per_sweep(result.stdout) == SIMULATIONS
     assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
-    assert counts["paper_figure"] == 15 and counts["paper"] == 1 and counts["report"] == 1
+    assert counts["paper_figure"] == 19 and counts["paper"] == 1 and counts["report"] == 1
+    assert counts["paper_table"] == 8
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 3 * 3 and counts["fig_convergence"] == 3 + 1 + 3
 
 
@@ -97,17 +98,17 @@ def write_ratchet(directory, resolution, minimum=0):
 
 
 def test_reference_check_reads_the_ratchet(workdir, tmp_path):
-    ratchet = write_ratchet(tmp_path, 32, minimum=7)
+    ratchet = write_ratchet(tmp_path, 64, minimum=7)
     result, counts = dry(workdir, "reference_check", "-p", "--config", f"reference={{ratchet: {ratchet}}}")
     assert counts["simulate"] == 38 and counts["reference_check"] == 1
     assert "--min-within 7" in result.stdout
 
 
 def test_ratchet_for_another_resolution_is_refused(workdir, tmp_path):
-    ratchet = write_ratchet(tmp_path, 64)
+    ratchet = write_ratchet(tmp_path, 32)
     result = snakemake(workdir, "-n", "--nolock", "reference_check", "--config", f"reference={{ratchet: {ratchet}}}",
                        env=DRY_ENV, check=False)
-    assert result.returncode != 0 and "H/64" in result.stdout + result.stderr
+    assert result.returncode != 0 and "H/32" in result.stdout + result.stderr
 
 
 def test_a_new_point_runs_alone(workdir, tmp_path, study_config):

@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""A LaTeX table of chosen per-run metrics from one or more sweeps (the report's sweep tables).
+
+    paper/make_sweep_table.py 'v* = 1 m/s=results/regularized_fast/table/all_metrics.csv' ... \\
+        --columns elements_per_H celerity category min_T_over_N end_reason -o generated/regularized.tex
+
+Each input is LABEL=all_metrics.csv (one row per run, written by `python3 -m analysis aggregate`);
+with more than one input a first column `set` holds the label. Rows keep the input order and, within
+an input, are sorted by the listed parameter columns (COLUMNS entries of kind 'param'). Column
+headings and number formats come from COLUMNS, so that every table of the report spells a quantity
+the same way; an empty or non-finite value prints as a dash. Only selection and formatting happen
+here: every number comes from the inputs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import math
+import os
+import sys
+import tempfile
+
+#: column -> (heading, kind, format): kind 'param' sorts rows; format is a str.format spec or
+#: 'text' / 'yesno' / 'label' (underscores become spaces).
+COLUMNS = {
+    "nu": (r"$\nu$", "param", "{:.2f}"),
+    "f": (r"$f$", "param", "{:.2f}"),
+    "V0_over_cs": (r"$V_0/c_s$", "param", "{:.0e}"),
+    "lambda_over_H": (r"$\lambda/H$", "param", "{:g}"),
+    "elements_per_H": (r"$H/h$", "param", "{:.0f}"),
+    "rho": (r"$\rho$ (kg/m$^3$)", "param", "{:g}"),
+    "dt_times_cs": (r"$\Delta t\,c_s$ (m)", "param", "{:g}"),
+    "seed": ("seed", "param", "{:.0f}"),
+    "celerity": (r"$c_p$ (m/s)", "value", "{:.3f}"),
+    "celerity_over_cs": (r"$c_p/c_s$", "value", "{:.3f}"),
+    "regime": ("regime", "value", "label"),
+    "category": ("category", "value", "label"),
+    "opening": ("opening", "value", "yesno"),
+    "inversion": ("inversion", "value", "yesno"),
+    "max_opening": (r"max $u_y$ (m)", "value", "{:.2g}"),
+    "min_T_over_N": (r"min $T/N$", "value", "{:.2f}"),
+    "onset_time": (r"onset (s)", "value", "{:.0f}"),
+    "localization_time": (r"localized (s)", "value", "{:.0f}"),
+    "first_opening_time": (r"first opening (s)", "value", "{:.0f}"),
+    "first_drop_start_after_onset": (r"drop start $-$ onset (s)", "value", "{:.0f}"),
+    "first_drop_duration": (r"drop duration (s)", "value", "{:.0f}"),
+    "first_drop_start_T_over_N": (r"$T/N$ at drop start", "value", "{:.2f}"),
+    "first_drop_bottom_T_over_N": (r"$T/N$ at drop bottom", "value", "{:.2f}"),
+    "n_drops": ("drops", "value", "{:.0f}"),
+    "later_drops_start_T_over_N_median": (r"later drops start at $T/N$", "value", "{:.2f}"),
+    "pulse_count": ("major pulses", "value", "{:.0f}"),
+    "pulse_count_all": ("all fronts", "value", "{:.0f}"),
+    "pulse_spacing": (r"spacing $l$ (m)", "value", "{:.1f}"),
+    "pulse_spacing_theory": (r"$2H\sqrt{c_p^2/c_s^2-1}$ (m)", "value", "{:.1f}"),
+    "friction_work_ratio_opening": (r"$\Delta D_f/\Delta W$ opening", "value", "{:.2f}"),
+    "dissipative_friction_opening": (r"$\mu_{\rm diss}$ opening", "value", "{:.2f}"),
+    "dissipative_friction_before_opening": (r"$\mu_{\rm diss}$ before", "value", "{:.2f}"),
+    "end_reason": ("run ended by", "value", "label"),
+}
+
+
+def parse(text: str):
+    """A CSV cell: float when it spells a number, bool for true/false, else the text."""
+    text = (text or "").strip()
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def derived(row: dict) -> dict:
+    """Columns computed from others: the time step in m (dt c_s), c_p/c_s, the first drop's start
+    after the slip onset and its duration."""
+    def number(key):
+        value = row.get(key)
+        return value if isinstance(value, float) and math.isfinite(value) else math.nan
+    extra = {}
+    if "dt_times_cs" not in row:
+        extra["dt_times_cs"] = round(number("dt") * number("c_s"), 9)
+    extra["celerity_over_cs"] = number("celerity") / number("c_s")
+    extra["first_drop_start_after_onset"] = number("first_drop_start_time") - number("onset_time")
+    extra["first_drop_duration"] = number("first_drop_bottom_time") - number("first_drop_start_time")
+    return {**extra, **row}
+
+
+def cell(value, fmt: str) -> str:
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if fmt == "yesno":
+        return "--" if value in ("", None) else str(value)
+    if fmt in ("text", "label"):
+        if value in ("", None) or (isinstance(value, float) and not math.isfinite(value)):
+            return "--"
+        text = str(value).replace("_", " " if fmt == "label" else r"\_")
+        return text
+    if not isinstance(value, float) or not math.isfinite(value):
+        return "--"
+    text = fmt.format(value)
+    if "e" in text and fmt.endswith("e}"):  # 1e-05 -> 10^{-5}
+        mantissa, exponent = text.split("e")
+        text = (f"{mantissa}\\times" if float(mantissa) != 1 else "") + f"10^{{{int(exponent)}}}"
+    return f"${text}$"
+
+
+def read(path: str) -> list[dict]:
+    with open(path, newline="") as stream:
+        return [derived({k: parse(v) for k, v in row.items() if k}) for row in csv.DictReader(stream)]
+
+
+def table(sets: list[tuple[str, list[dict]]], columns: list[str]) -> str:
+    labelled = len(sets) > 1
+    params = [c for c in columns if COLUMNS[c][1] == "param"]
+    lines = [r"\begin{tabular}{" + ("l" if labelled else "") + "r" * len(columns) + "}", r"\toprule",
+             " & ".join((["set"] if labelled else []) + [COLUMNS[c][0] for c in columns]) + r" \\",
+             r"\midrule"]
+    for label, rows in sets:
+        rows = sorted(rows, key=lambda r: tuple(r.get(p) if isinstance(r.get(p), float) else math.inf
+                                                for p in params))
+        for r in rows:
+            cells = [cell(r.get(c), COLUMNS[c][2]) for c in columns]
+            lines.append(" & ".join(([label] if labelled else []) + cells) + r" \\")
+    lines += [r"\bottomrule", r"\end{tabular}", ""]
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("inputs", nargs="+", metavar="LABEL=ALL_METRICS_CSV")
+    parser.add_argument("--columns", nargs="+", required=True, choices=sorted(COLUMNS), metavar="COLUMN",
+                        help=f"columns, in order; one of: {', '.join(COLUMNS)}")
+    parser.add_argument("-o", "--output", required=True)
+    args = parser.parse_args(argv)
+    sets = []
+    for item in args.inputs:
+        label, sep, path = item.rpartition("=")  # the label may contain "=", the path does not
+        if not sep:
+            print(f"make_sweep_table.py: error: {item!r} is not LABEL=ALL_METRICS_CSV", file=sys.stderr)
+            return 2
+        try:
+            sets.append((label, read(path)))
+        except OSError as error:
+            print(f"make_sweep_table.py: error: {path}: cannot read ({error.strerror})", file=sys.stderr)
+            return 2
+    directory = os.path.dirname(os.path.abspath(args.output))
+    os.makedirs(directory, exist_ok=True)
+    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
+        out.write(table(sets, args.columns))
+    os.replace(out.name, args.output)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
