@@ -242,6 +242,23 @@ def metrics_macros(rows, E):
     m["celerityShearRate"] = listing(sweep("V0_over_cs", lambda r: r["celerity"]))
     m["celerityOverCsDensity"] = listing(sweep("rho", lambda r: r["celerity"] / c_s(r)))
     m["celerityMesh"] = listing(sweep("elements_per_H", lambda r: r["celerity"]))
+    m["celerityTimestep"] = listing(sweep("dt_times_cs", lambda r: r["celerity"]))
+    # Frictional dissipation per unit mean slip (mu_diss, = f for uniform Coulomb sliding) over the
+    # grid's opening runs: while the interface slides by opening waves, and before they open.
+    def median_over_f(key):
+        values = sorted(r[key] / r["f"] for r in grid if r.get("opening") is True and r["f"] > 0
+                        and isinstance(r.get(key), float) and math.isfinite(r[key]))
+        return (values[len(values) // 2] if len(values) % 2 else
+                0.5 * (values[len(values) // 2 - 1] + values[len(values) // 2])) if values else None, len(values)
+    during, n_during = median_over_f("dissipative_friction_opening")
+    before, _ = median_over_f("dissipative_friction_before_opening")
+    m["medianMuDissOpeningOverF"] = num(during, 2)
+    m["medianMuDissBeforeOverF"] = num(before, 2)
+    m["nMuDissRuns"] = num(n_during) if grid else None
+    shares = sorted(r["friction_energy_share_opening"] for r in grid if r.get("opening") is True
+                    and isinstance(r.get("friction_energy_share_opening"), float)
+                    and math.isfinite(r["friction_energy_share_opening"]))
+    m["medianFrictionEnergyShareOpening"] = num(shares[len(shares) // 2], 2) if shares else None
     errors = [abs(r["energy_balance_error"]) for r in rows
               if isinstance(r.get("energy_balance_error"), float)
               and math.isfinite(r["energy_balance_error"])]
@@ -289,18 +306,19 @@ def wedge_macros(rows, boundary):
                             num(len(outside)), num(sum(r.get("opening") is True for r in outside)))))
 
 
-def direction_switch_macros(rows):
+def direction_switch_macros(rows, column="celerity", prefix="switch"):
     """For nu = 0.45 and 0.49: the largest f of the grid with a backward front and the smallest
-    larger f with a forward one (the paper: back to +x at higher f)."""
+    larger f with a forward one (the paper: back to +x at higher f); `column` = published for the
+    paper's own values (table1.csv)."""
     ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
-    grid = [r for r in rows if matches(r, **ref) and isinstance(r.get("celerity"), float)
-            and math.isfinite(r["celerity"])]
+    grid = [r for r in rows if matches(r, **ref) and isinstance(r.get(column), float)
+            and math.isfinite(r[column])]
     meshes = Counter(r.get("elements_per_H") for r in grid)
-    if meshes:
+    if meshes and None not in meshes:
         grid = [r for r in grid if close(r.get("elements_per_H"), meshes.most_common(1)[0][0])]
     macros = {}
-    for nu, name in ((0.45, "switchFNuFortyFive"), (0.49, "switchFNuFortyNine")):
-        cells = sorted((r["f"], r["celerity"]) for r in grid if close(r["nu"], nu))
+    for nu, name in ((0.45, prefix + "FNuFortyFive"), (0.49, prefix + "FNuFortyNine")):
+        cells = sorted((r["f"], r[column]) for r in grid if close(r["nu"], nu))
         backward = [f for f, c in cells if c < 0]
         forward = [f for f, c in cells if c > 0 and backward and f > max(backward)]
         macros[name] = (f"{num(max(backward))}--{num(min(forward))}" if backward and forward else None)
@@ -327,6 +345,7 @@ def all_macros(summary_path=None, metrics_path=None, table1_path=None, E=1000.0,
     macros.update(published_macros(table))
     macros.update(wedge_macros(rows, read_flutter(flutter_path) if flutter_path else []))
     macros.update(direction_switch_macros(rows))
+    macros.update(direction_switch_macros(table, "published", "publishedSwitch"))
     return macros
 
 

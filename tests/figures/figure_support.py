@@ -11,11 +11,11 @@ FIGURES = ROOT / "figures"
 PAPER = ROOT / "paper"
 sys.path.insert(0, str(FIGURES))
 
-GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5"]
+GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5", "dt_times_cs=0.5"]
 
 
 def report_jobs(data):
-    """The 15 figures reproduction.tex expects, as the pipeline would make them:
+    """The 19 figures reproduction.tex expects, as the pipeline would make them:
     {name: (script, args...)} with paths into the synthetic data folder."""
     jobs = {
         "fig2a_slip_velocity": ("spacetime", data / "run.h5", "--field", "slip_velocity",
@@ -42,6 +42,10 @@ def report_jobs(data):
         "convergence_density": ("convergence", data / "all_metrics.csv", "--param", "rho"),
         "convergence_shear_rate": ("convergence", data / "all_metrics.csv", "--param",
                                    "V0_over_cs"),
+        "convergence_timestep": ("convergence", data / "all_metrics.csv", "--param", "dt_times_cs"),
+        "regularized_fast_h128": ("spacetime", data / "run.h5", "--field", "slip_velocity"),
+        "regularized_mid_h128": ("spacetime", data / "run_v1e-06.h5", "--field", "slip_velocity"),
+        "regularized_slow_h128": ("spacetime", data / "run_v0.0001.h5", "--field", "slip_velocity"),
     }
     return jobs
 

@@ -157,7 +157,10 @@ def metrics_rows():
                  category=category, pulse_count=count,
                  pulse_spacing=r["lambda_over_H"] * H / count,
                  energy_balance_error=1e-4 * (1 + nu), c_s=c_s, E=E, H=H,
-                 dt=0.5 / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json")
+                 dissipative_friction_opening=0.2 * f if opening else None,
+                 dissipative_friction_before_opening=0.9 * f,
+                 friction_energy_share_opening=0.5 if opening else None,
+                 dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json")
         return r
 
     rows += [row(nu, f) for nu in NUS for f in FS]
@@ -165,6 +168,7 @@ def metrics_rows():
     rows += [row(0.2, 1.5, elements_per_H=n) for n in (16, 64, 128)]
     rows += [row(0.2, 1.5, rho=r) for r in (0.1, 10.0)]
     rows += [row(0.2, 1.5, V0_over_cs=v) for v in (1e-6, 5e-6, 5e-5, 1e-4)]
+    rows += [row(0.2, 1.5, dt_times_cs=d) for d in (0.25, 1.0)]
     return rows
 
 

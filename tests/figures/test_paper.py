@@ -18,9 +18,22 @@ def macros(path):
     return dict(re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", path.read_text()))
 
 
+def study_tables():
+    """The report's tables declared in study/config.yaml (`paper.tables`)."""
+    import yaml
+
+    config = yaml.safe_load((PAPER.parent / "study" / "config.yaml").read_text())
+    return config["paper"]["tables"]
+
+
+def test_every_table_of_the_report_is_declared():
+    used = set(re.findall(r"\\generatedtable\{([\w]+)\}", (PAPER / "reproduction.tex").read_text()))
+    assert used == set(study_tables())
+
+
 def expected_figures():
     names = re.findall(r"\\generatedfigure\{([\w]+)\}", (PAPER / "reproduction.tex").read_text())
-    assert len(names) == 15
+    assert len(names) == 19
     make = (PAPER / "Makefile").read_text()
     listed = re.search(r"FIGURES = (.*?)\n\n", make, re.S).group(1).replace("\\", " ").split()
     assert sorted(listed) == sorted(names), "Makefile FIGURES and reproduction.tex disagree"
@@ -30,7 +43,7 @@ def expected_figures():
 def test_numbers_from_the_study(data, tmp_path):
     out = tmp_path / "numbers.tex"
     result = command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
-                     "--table1", data / "table1.csv", "-o", out)
+                     "--table1", data / "table1.csv", "--flutter", data / "flutter.txt", "-o", out)
     assert result.returncode == 0, result.stderr
     m = macros(out)
     assert m["cellsTotal"] == r"\ensuremath{38}"
@@ -110,7 +123,8 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
         for ext in ("png", "pdf"):
             shutil.copy(f"{prefix}.{ext}", gen / f"{name}.{ext}")
     assert command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
-                   "--table1", data / "table1.csv", "-o", gen / "numbers.tex").returncode == 0
+                   "--table1", data / "table1.csv", "--flutter", data / "flutter.txt",
+                   "-o", gen / "numbers.tex").returncode == 0
     assert command(PAPER / "make_table1.py", data / "table1.csv",
                    "-o", gen / "table1.tex").returncode == 0
     assert command(PAPER / "make_variants.py", f"default={data / 'summary.json'}",
@@ -118,6 +132,12 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
     assert "dt = 1 m / c\\_s" in (gen / "variants.tex").read_text()
     assert command(PAPER / "make_variants.py", "no-equals-sign", "-o", gen / "bad.tex").returncode == 2
     assert not (gen / "bad.tex").exists()
+    for name, table in study_tables().items():  # every table of the study config, from the synthetic study
+        if table.get("resolution"):
+            args = ["make_resolution_table.py", f"H/32={data / 'table1.csv'}", f"H/64={data / 'table1.csv'}"]
+        else:
+            args = ["make_sweep_table.py", f"all={data / 'all_metrics.csv'}", "--columns", *table["columns"]]
+        assert command(PAPER / args[0], *args[1:], "-o", gen / f"{name}.tex").returncode == 0, name
     build(paper)
     missing = subprocess.run(["make", "-s", "-C", str(paper), "missing"], capture_output=True,
                              text=True)
