@@ -6,7 +6,7 @@ moving average over `smooth_time` (the solver's T/N chatters from step to step b
 drop lasts several shear transits H/c_s): a *drop* starts at a peak after which T/N falls by at
 least `min_drop`, and bottoms out at the lowest value before T/N recovers by `min_drop` above it.
 Times and values are those of the smoothed series. `analysis.measure` uses min_drop = 0.1 f and
-smooth_time = H / c_s.
+smooth_time = 2 H / c_s (the shear round trip, at which the layer rings between drops).
 """
 
 from __future__ import annotations
