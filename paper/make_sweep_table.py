@@ -19,7 +19,10 @@ import csv
 import math
 import os
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_numbers import parse  # noqa: E402
+from table_io import labelled_paths, write_atomically  # noqa: E402
 
 #: column -> (heading, kind, format): kind 'param' sorts rows; format is a str.format spec or
 #: 'text' / 'yesno' / 'label' (underscores become spaces).
@@ -60,17 +63,6 @@ COLUMNS = {
 }
 
 
-def parse(text: str):
-    """A CSV cell: float when it spells a number, bool for true/false, else the text."""
-    text = (text or "").strip()
-    if text.lower() in ("true", "false"):
-        return text.lower() == "true"
-    try:
-        return float(text)
-    except ValueError:
-        return text
-
-
 def derived(row: dict) -> dict:
     """Columns computed from others: the time step in m (dt c_s), c_p/c_s, the first drop's start
     after the slip onset and its duration."""
@@ -89,14 +81,11 @@ def derived(row: dict) -> dict:
 def cell(value, fmt: str) -> str:
     if isinstance(value, bool):
         return "yes" if value else "no"
-    if fmt == "yesno":
-        return "--" if value in ("", None) else str(value)
-    if fmt in ("text", "label"):
-        if value in ("", None) or (isinstance(value, float) and not math.isfinite(value)):
-            return "--"
-        text = str(value).replace("_", " " if fmt == "label" else r"\_")
-        return text
-    if not isinstance(value, float) or not math.isfinite(value):
+    if value in ("", None) or (isinstance(value, float) and not math.isfinite(value)):
+        return "--"
+    if fmt in ("text", "label", "yesno"):
+        return str(value).replace("_", " " if fmt == "label" else r"\_")
+    if not isinstance(value, float):
         return "--"
     text = fmt.format(value)
     if "e" in text and fmt.endswith("e}"):  # 1e-05 -> 10^{-5}
@@ -133,22 +122,15 @@ def main(argv: list[str] | None = None) -> int:
                         help=f"columns, in order; one of: {', '.join(COLUMNS)}")
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args(argv)
-    sets = []
-    for item in args.inputs:
-        label, sep, path = item.rpartition("=")  # the label may contain "=", the path does not
-        if not sep:
-            print(f"make_sweep_table.py: error: {item!r} is not LABEL=ALL_METRICS_CSV", file=sys.stderr)
-            return 2
-        try:
-            sets.append((label, read(path)))
-        except OSError as error:
-            print(f"make_sweep_table.py: error: {path}: cannot read ({error.strerror})", file=sys.stderr)
-            return 2
-    directory = os.path.dirname(os.path.abspath(args.output))
-    os.makedirs(directory, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
-        out.write(table(sets, args.columns))
-    os.replace(out.name, args.output)
+    try:
+        sets = [(label, read(path)) for label, path in labelled_paths(args.inputs, "ALL_METRICS_CSV")]
+    except ValueError as error:
+        print(f"make_sweep_table.py: error: {error}", file=sys.stderr)
+        return 2
+    except OSError as error:
+        print(f"make_sweep_table.py: error: {error.filename}: cannot read ({error.strerror})", file=sys.stderr)
+        return 2
+    write_atomically(args.output, table(sets, args.columns))
     return 0
 
 

@@ -14,7 +14,9 @@ import argparse
 import json
 import os
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from table_io import labelled_paths, write_atomically  # noqa: E402
 
 
 def row(label: str, summary: dict) -> str:
@@ -30,11 +32,12 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     lines = [r"\begin{tabular}{lrrrrr}", r"\toprule",
              r"variant & measured & signs & regimes & within 5\,\% & median dev. \\", r"\midrule"]
-    for item in args.variants:
-        label, sep, path = item.rpartition("=")  # the label may contain "=", the path does not
-        if not sep:
-            print(f"make_variants.py: error: {item!r} is not LABEL=SUMMARY_JSON", file=sys.stderr)
-            return 2
+    try:
+        pairs = labelled_paths(args.variants, "SUMMARY_JSON")
+    except ValueError as error:
+        print(f"make_variants.py: error: {error}", file=sys.stderr)
+        return 2
+    for label, path in pairs:
         try:
             with open(path) as stream:
                 lines.append(row(label.replace("_", r"\_"), json.load(stream)))
@@ -42,11 +45,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"make_variants.py: error: {path}: {error}", file=sys.stderr)
             return 2
     lines += [r"\bottomrule", r"\end{tabular}", ""]
-    directory = os.path.dirname(os.path.abspath(args.output))
-    os.makedirs(directory, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
-        out.write("\n".join(lines))
-    os.replace(out.name, args.output)
+    write_atomically(args.output, "\n".join(lines))
     return 0
 
 

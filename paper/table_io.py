@@ -1,0 +1,29 @@
+"""Shared by the table scripts of paper/: LABEL=PATH arguments and atomic writes."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+
+
+def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
+    """[(label, path)] of 'LABEL=PATH' arguments; the label may contain '=', the path does not.
+
+    Raises ValueError naming the argument that is not LABEL=PATH (`what` names PATH, e.g. SUMMARY_JSON).
+    """
+    pairs = []
+    for item in items:
+        label, sep, path = item.rpartition("=")
+        if not sep:
+            raise ValueError(f"{item!r} is not LABEL={what}")
+        pairs.append((label, path))
+    return pairs
+
+
+def write_atomically(path: str, text: str) -> None:
+    """Write `text` to `path` through a temporary file and a rename: never a partial file."""
+    directory = os.path.dirname(os.path.abspath(path))
+    os.makedirs(directory, exist_ok=True)
+    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
+        out.write(text)
+    os.replace(out.name, path)
