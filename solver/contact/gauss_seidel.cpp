@@ -5,10 +5,14 @@
 
 namespace slidewave {
 
-GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
-                                             const std::vector<double>& bounds, const GaussSeidelSettings& settings,
-                                             Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                             std::vector<ContactState>& state) {
+namespace {
+
+/// One pass of at most settings.max_iterations sweeps from the r passed in, each node's reaction moved
+/// by `relaxation` times the change of its exact local solve.
+GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
+                                        const std::vector<double>& bounds, const GaussSeidelSettings& settings,
+                                        double relaxation, Eigen::VectorXd& r, Eigen::VectorXd& y,
+                                        std::vector<ContactState>& state) {
   const int n_nodes = static_cast<int>(q.size() / 2);
   state.assign(n_nodes, ContactState::open);
   y = q + W * r;
@@ -16,7 +20,12 @@ GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eig
   for (int k = 0; k < n_nodes; ++k) diagonal_blocks[k] = W.block<2, 2>(2 * k, 2 * k);
 
   GaussSeidelReport report{0, 0.0, false};
+  report.relaxation = relaxation;
   std::vector<int> n_status_changes(bounds.empty() ? 0 : n_nodes, 0);
+  // Period-2 orbit detection (plain pass only): r two sweeps back, and how many sweeps in a row
+  // came back to it while still changing by more than the tolerance.
+  Eigen::VectorXd r_previous = r, r_two_back = r;
+  int n_cycle_sweeps = 0;
   while (report.iterations < settings.max_iterations) {
     ++report.iterations;
     double max_change = 0;
@@ -31,11 +40,13 @@ GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eig
           ++n_status_changes[k] == kMaxStatusChanges + 1)
         ++report.n_bounds_released;
       state[k] = local.state;
-      const Eigen::Vector2d delta = local.r - r_old;
-      if (delta.x() != 0 || delta.y() != 0) {
-        r.segment<2>(2 * k) = local.r;
+      const Eigen::Vector2d change = local.r - r_old;
+      if (change.x() != 0 || change.y() != 0) {
+        // relaxation 1 assigns local.r itself (r_old + change may differ from it in the last bit)
+        const Eigen::Vector2d delta = relaxation == 1 ? change : Eigen::Vector2d(relaxation * change);
+        r.segment<2>(2 * k) = relaxation == 1 ? local.r : Eigen::Vector2d(r_old + delta);
         y.noalias() += W.middleCols<2>(2 * k) * delta;
-        max_change = std::max(max_change, delta.cwiseAbs().maxCoeff());
+        max_change = std::max(max_change, change.cwiseAbs().maxCoeff());
       }
     }
     report.residual = max_change / settings.force_scale;
@@ -43,10 +54,36 @@ GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eig
       report.converged = true;
       break;
     }
+    if (relaxation == 1) {
+      // Back where it was two sweeps ago (to 1e-3 of this sweep's change) on kCycleSweeps sweeps in a
+      // row: a period-2 orbit that will never converge, so stop now instead of at max_iterations.
+      // A converging iteration cannot show this (its changes would have to alternate without decaying).
+      const bool returned = (r - r_two_back).cwiseAbs().maxCoeff() <= 1e-3 * max_change;
+      n_cycle_sweeps = returned ? n_cycle_sweeps + 1 : 0;
+      if (n_cycle_sweeps >= kCycleSweeps) break;
+      r_two_back.swap(r_previous);
+      r_previous = r;
+    }
   }
   // Recompute y from scratch so that rounding drift of the in-place updates never reaches the output.
   y = q + W * r;
   return report;
+}
+
+}  // namespace
+
+GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
+                                             const std::vector<double>& bounds, const GaussSeidelSettings& settings,
+                                             Eigen::VectorXd& r, Eigen::VectorXd& y,
+                                             std::vector<ContactState>& state) {
+  const Eigen::VectorXd r_start = r;
+  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state);
+  if (plain.converged) return plain;
+  // Plain sweeps cycled (or are too slow): restart from the warm start, under-relaxed.
+  r = r_start;
+  GaussSeidelReport relaxed = sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state);
+  relaxed.iterations += plain.iterations;
+  return relaxed;
 }
 
 }  // namespace slidewave

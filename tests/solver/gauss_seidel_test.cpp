@@ -129,7 +129,53 @@ TEST(GaussSeidel, ReportsNonConvergenceAtTheIterationCap) {
   std::vector<ContactState> state;
   const auto report = solve_contact_gauss_seidel(W, q, 1.0, {}, settings, r, y, state);
   EXPECT_FALSE(report.converged);
-  EXPECT_EQ(report.iterations, 3);
+  EXPECT_EQ(report.iterations, 2 * 3);  // the plain pass, then the under-relaxed one
+  EXPECT_EQ(report.relaxation, kFallbackRelaxation);
+}
+
+// Coulomb, two nodes, f = 2, one solution (both slipping). Node 0's friction lifts node 1
+// (W(3, 0) = 0.15 > 0), and exact local solves overshoot from both sides: node 1 slips under
+// r_y1 = 0.51, node 0 then slips at r_x0 = 1.25 and opens node 1, which lowers r_x0 to 0.32, and
+// so on; plain sweeps repeat with period 2 from the first sweep, the change per sweep stays 1.02
+// (the old behaviour: not converged at any cap). The under-relaxed pass converges to the solution.
+TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
+  Eigen::MatrixXd W(4, 4);
+  W << 0.41, 0.00, 0.08, 0.15,
+       0.00, 0.62, 0.35, 0.14,
+       0.08, 0.35, 0.53, 0.00,
+       0.15, 0.14, 0.00, 0.33;
+  const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.68, -0.10, 0.69, -0.24).finished();
+  const double f = 2.0;
+  const auto solutions = testing::enumerate_solutions(W, q, f, 1e-12);
+  ASSERT_EQ(solutions.size(), 1u);
+
+  // Plain sweeps written out: each node solved exactly with the other frozen, from r = 0.
+  const auto plain_sweep = [&](Eigen::VectorXd r) {
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::Matrix2d D = W.block<2, 2>(2 * k, 2 * k);
+      const Eigen::Vector2d b = (q + W * r).segment<2>(2 * k) - D * r.segment<2>(2 * k);
+      r.segment<2>(2 * k) = solve_local_coulomb(D, b, f).r;
+    }
+    return r;
+  };
+  const Eigen::VectorXd r_1 = plain_sweep(Eigen::VectorXd::Zero(4)), r_2 = plain_sweep(r_1),
+                        r_3 = plain_sweep(r_2);
+  EXPECT_GT((r_2 - r_1).cwiseAbs().maxCoeff(), 1.0);
+  EXPECT_LE((r_3 - r_1).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_GT((r_1 - solutions[0]).cwiseAbs().maxCoeff(), 0.4);
+
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(4), y;
+  std::vector<ContactState> state;
+  const GaussSeidelSettings settings{1e-14, 2000, 1.0};
+  const auto report = solve_contact_gauss_seidel(W, q, f, {}, settings, r, y, state);
+  ASSERT_TRUE(report.converged);
+  EXPECT_EQ(report.relaxation, kFallbackRelaxation);
+  // The orbit is detected after kCycleSweeps returns (not at the cap), then the relaxed pass converges.
+  EXPECT_LE(report.iterations, 2 + kCycleSweeps + 100);
+  EXPECT_LE((r - solutions[0]).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(testing::signorini_coulomb_violations(W, q, f, r, 1e-12), "");
+  EXPECT_EQ(state[0], ContactState::slip);
+  EXPECT_EQ(state[1], ContactState::slip);
 }
 
 // Prakash–Clifton bounds, two nodes, f = 1: no solution exists with the given bounds, so exact local
