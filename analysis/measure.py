@@ -35,6 +35,7 @@ PARAMETERS = {
     "mass": ("mesh", "mass"), "Uy_over_H": ("loading", "Uy_over_H"),
     "preshear_ratio": ("loading", "preshear_ratio"), "V0_over_cs": ("loading", "V0_over_cs"),
     "f": ("friction", "f"), "regularization": ("friction", "regularization"),
+    "pc_length": ("friction", "pc_length"), "pc_velocity": ("friction", "pc_velocity"),
     "hht_alpha": ("time", "hht_alpha"), "contact_weighting": ("time", "contact_weighting"),
     "stop_after_opening": ("time", "stop_after_opening"),
     "perturbation_amplitude": ("perturbation", "amplitude"), "seed": ("perturbation", "seed"),
@@ -99,6 +100,8 @@ def _parameters(run: RunData) -> dict[str, Any]:
     if out["elements_per_H"] is None:
         out["elements_per_H"] = int(round(run.attr("H") / run.attr("h")))
     out["dt"] = run.attr("dt")
+    # The time step in the study's unit (a point parameter, study/sweeps.py), from the dt actually used.
+    out["dt_times_cs"] = round(run.attr("dt") * run.attr("c_s"), 9)
     out["t_end"] = run.attr("t_end")
     return out
 
