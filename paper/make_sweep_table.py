@@ -46,7 +46,7 @@ COLUMNS = {
     "onset_time": (r"onset (s)", "value", "{:.0f}"),
     "localization_time": (r"localized (s)", "value", "{:.0f}"),
     "first_opening_time": (r"first opening (s)", "value", "{:.0f}"),
-    "first_drop_start_after_onset": (r"drop start $-$ onset (s)", "value", "{:.0f}"),
+    "first_drop_start_after_onset": (r"drop after onset (s)", "value", "{:.0f}"),
     "first_drop_duration": (r"drop duration (s)", "value", "{:.0f}"),
     "first_drop_start_T_over_N": (r"$T/N$ at drop start", "value", "{:.2f}"),
     "first_drop_bottom_T_over_N": (r"$T/N$ at drop bottom", "value", "{:.2f}"),
