@@ -15,7 +15,7 @@ GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5", "
 
 
 def report_jobs(data):
-    """The 19 figures reproduction.tex expects, as the pipeline would make them:
+    """The 20 figures reproduction.tex expects, as the pipeline would make them:
     {name: (script, args...)} with paths into the synthetic data folder."""
     jobs = {
         "fig2a_slip_velocity": ("spacetime", data / "run.h5", "--field", "slip_velocity",
@@ -44,6 +44,7 @@ def report_jobs(data):
                                    "V0_over_cs"),
         "convergence_timestep": ("convergence", data / "all_metrics.csv", "--param", "dt_times_cs"),
         "regularized_fast_h128": ("spacetime", data / "run.h5", "--field", "slip_velocity"),
+        "regularized_between_h128": ("spacetime", data / "run.h5", "--field", "state"),
         "regularized_mid_h128": ("spacetime", data / "run_v1e-06.h5", "--field", "slip_velocity"),
         "regularized_slow_h128": ("spacetime", data / "run_v0.0001.h5", "--field", "slip_velocity"),
     }

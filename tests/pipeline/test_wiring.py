@@ -40,7 +40,7 @@ def test_quick_is_the_default_target(workdir):
 SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1,
                "table1_h32": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
                "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 14,
-               "regularized_fast": 3, "regularized_mid": 3, "regularized_slow": 3}
+               "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3}
 
 
 def jobs(output):
@@ -69,9 +69,9 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     result, counts = dry(REPO, "all", "--forceall")
     assert simulations_per_sweep(result.stdout) == SIMULATIONS
     assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
-    assert counts["paper_figure"] == 19 and counts["paper"] == 1 and counts["report"] == 1
+    assert counts["paper_figure"] == 20 and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == 8
-    assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 3 * 3 and counts["fig_convergence"] == 3 + 1 + 3
+    assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
 
 def test_one_target_per_sweep(workdir):
