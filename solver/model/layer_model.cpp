@@ -59,12 +59,16 @@ PreloadState solve_preload(const LayerModel& model) {
   const Eigen::MatrixXd W = delassus_operator_periodic(*K_static, model.mesh.n_contact());
   GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
 
+  // Contact displacements of the free (reaction-less) static response to the top displacement u_d.
+  const auto free_contact_displacement = [&](const Eigen::VectorXd& u_d) -> Eigen::VectorXd {
+    return K_static->solve(Eigen::VectorXd(-(model.K_fd * u_d))).head(n_c);
+  };
+
   // Quasi-static contact solve: K_ff u_f = -K_fd u_d + C^T r; local slip measured from u_x_before.
   const auto solve_static = [&](const Eigen::VectorXd& u_d, const Eigen::VectorXd& u_contact_before,
                                 Eigen::VectorXd& r, std::vector<ContactState>& state, int& iterations) {
     Eigen::VectorXd rhs = -(model.K_fd * u_d);
-    const Eigen::VectorXd u_free = K_static->solve(rhs);
-    Eigen::VectorXd q = u_free.head(n_c);
+    Eigen::VectorXd q = free_contact_displacement(u_d);
     for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
     Eigen::VectorXd y;
     const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, y, state);
@@ -79,7 +83,6 @@ PreloadState solve_preload(const LayerModel& model) {
 
   PreloadState s;
   s.contact_iterations = 0;
-  s.r = Eigen::VectorXd::Zero(n_c);
   const double u_y_top = c.loading.Uy_over_H * model.d.H;
 
   // Stage 1: compression, warm-started from the all-stick answer W r = -q (glued interface, exact
@@ -87,19 +90,16 @@ PreloadState solve_preload(const LayerModel& model) {
   // of sweeps from zero that stop at the tolerance, not at round-off.
   const Eigen::LDLT<Eigen::MatrixXd> W_ldlt = W.ldlt();
   const Eigen::VectorXd zero_contact = Eigen::VectorXd::Zero(n_c);
-  const Eigen::VectorXd q_compression =
-      K_static->solve(Eigen::VectorXd(-(model.K_fd * model.top_displacement(0, u_y_top)))).head(n_c);
-  s.r = -W_ldlt.solve(q_compression);
-  Eigen::VectorXd u1 = solve_static(model.top_displacement(0, u_y_top), zero_contact, s.r, s.state,
-                                    s.contact_iterations);
+  const Eigen::VectorXd u_d1 = model.top_displacement(0, u_y_top);
+  s.r = -W_ldlt.solve(free_contact_displacement(u_d1));
+  Eigen::VectorXd u1 = solve_static(u_d1, zero_contact, s.r, s.state, s.contact_iterations);
   const Eigen::VectorXd r1 = s.r;
   const Eigen::VectorXd u1_contact = u1.head(n_c);
 
   // Stage 2: while all nodes stick, the reactions are linear in the top shear U:
   // r(U) = r1 + U r_unit with W r_unit = -(free contact displacement of a unit shear). Solve for the U
   // that gives T/N = preshear_ratio * f, then verify with the full contact law.
-  const Eigen::VectorXd q_unit = K_static->solve(Eigen::VectorXd(-(model.K_fd * model.top_displacement(1, 0)))).head(n_c);
-  const Eigen::VectorXd r_unit = -W_ldlt.solve(q_unit);
+  const Eigen::VectorXd r_unit = -W_ldlt.solve(free_contact_displacement(model.top_displacement(1, 0)));
   const double target = c.loading.preshear_ratio * c.friction.f;
   const double T1 = -sum_every_other(r1, 0), N1 = sum_every_other(r1, 1);
   const double Tu = -sum_every_other(r_unit, 0), Nu = sum_every_other(r_unit, 1);

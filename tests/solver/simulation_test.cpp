@@ -86,7 +86,6 @@ TEST(Simulation, StopRequestEndsTheRunIncomplete) {
   expect_consistent_lengths(rec, config.output.interface_stride);
 }
 
-// The CLI reports a failed run with exit code 1; a preload failure leaves no file (nothing computed).
 // A run that ends early exits 1, says why on stderr and keeps what it computed (complete = 0).
 TEST(SimulationCli, ContactFailureExits1AndKeepsTheIncompleteRun) {
   const auto dir = std::filesystem::temp_directory_path() / ("slidewave_test_cli_fail_" + std::to_string(::getpid()));
