@@ -40,15 +40,6 @@ def parse_args(argv):
     return parser.parse_args(argv)
 
 
-def with_time_step(rows, path):
-    """Rows with a `dt_times_cs` column (dt c_s in m, the time step in the study's unit) derived
-    from the metrics' `dt` and `c_s` when the table has no such column."""
-    if rows and "dt_times_cs" not in rows[0] and "dt" in rows[0] and "c_s" in rows[0]:
-        for row in rows:
-            row["dt_times_cs"] = round(row["dt"] * row["c_s"], 9)
-    return rows
-
-
 def line_label(key, fixed):
     parts = []
     for column, value in zip(fixed, key):
@@ -61,10 +52,7 @@ def line_label(key, fixed):
 def main(argv=None):
     # 1. Parse options, read the runs, group them into lines along the parameter.
     args = parse_args(argv)
-    rows = with_time_step(read_csv(args.metrics, REQUIRED), args.metrics)
-    if args.param not in rows[0]:
-        raise InputError(f"{args.metrics}: missing required column(s) {args.param}")
-    rows = select(rows, args.where, args.metrics)
+    rows = select(read_csv(args.metrics, REQUIRED + (args.param,)), args.where, args.metrics)
     fixed = [c for c in RUN_PARAMETERS if c != args.param and c in rows[0]]
     lines = {}
     for r in rows:

@@ -27,6 +27,7 @@ import csv
 import json
 import math
 import os
+import statistics
 import sys
 from collections import Counter
 
@@ -154,12 +155,9 @@ def summary_macros(summary):
 
 def setup_macros(summary, rows):
     """Set-up constants: the most common value among the runs where all_metrics.csv has the
-    column (dt_times_cs from dt * c_s), else summary.json's `setup`, else the documented default."""
+    column (the metrics carry dt_times_cs), else summary.json's `setup`, else the documented default."""
     setup = dict(SETUP_DEFAULTS)
     setup.update({k: v for k, v in (summary or {}).get("setup", {}).items() if k in setup})
-    for r in rows:
-        if isinstance(r.get("dt"), float) and isinstance(r.get("c_s"), float):
-            r.setdefault("dt_times_cs", round(r["dt"] * r["c_s"], 9))
     for key in setup:
         values = Counter(r[key] for r in rows if isinstance(r.get(key), float)
                          and math.isfinite(r[key]))
@@ -174,8 +172,10 @@ def setup_macros(summary, rows):
             "referencePeriod": num(REFERENCE["lambda_over_H"])}
 
 
-def metrics_macros(rows, E):
-    m = {}
+def grid_rows(rows):
+    """(grid, mesh, integration): the rows of the (nu, f) grid, i.e. at the reference values of
+    every other parameter, with the most frequent mesh and integration among them (a column a
+    table lacks, e.g. the mesh of the published table1.csv, selects nothing)."""
     ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
     grid = [r for r in rows if matches(r, **ref)]
     meshes = Counter(r.get("elements_per_H") for r in grid)
@@ -186,6 +186,16 @@ def metrics_macros(rows, E):
     integration = variants.most_common(1)[0][0] if variants else None
     if integration is not None:
         grid = [r for r in grid if r.get("integration") == integration]
+    return grid, mesh, integration
+
+
+def finite_values(rows, key):
+    return [r[key] for r in rows if isinstance(r.get(key), float) and math.isfinite(r[key])]
+
+
+def metrics_macros(rows, E):
+    m = {}
+    grid, mesh, integration = grid_rows(rows)
     m["nRuns"] = num(len(rows))
     m["nGridPoints"] = num(len({(r["nu"], r["f"]) for r in grid}))
     m["gridMesh"] = num(mesh) if isinstance(mesh, float) else None
@@ -245,23 +255,18 @@ def metrics_macros(rows, E):
     m["celerityTimestep"] = listing(sweep("dt_times_cs", lambda r: r["celerity"]))
     # Frictional dissipation per unit mean slip (mu_diss, = f for uniform Coulomb sliding) over the
     # grid's opening runs: while the interface slides by opening waves, and before they open.
-    def median_over_f(key):
-        values = sorted(r[key] / r["f"] for r in grid if r.get("opening") is True and r["f"] > 0
-                        and isinstance(r.get(key), float) and math.isfinite(r[key]))
-        return (values[len(values) // 2] if len(values) % 2 else
-                0.5 * (values[len(values) // 2 - 1] + values[len(values) // 2])) if values else None, len(values)
-    during, n_during = median_over_f("dissipative_friction_opening")
-    before, _ = median_over_f("dissipative_friction_before_opening")
-    m["medianMuDissOpeningOverF"] = num(during, 2)
-    m["medianMuDissBeforeOverF"] = num(before, 2)
-    m["nMuDissRuns"] = num(n_during) if grid else None
-    shares = sorted(r["friction_energy_share_opening"] for r in grid if r.get("opening") is True
-                    and isinstance(r.get("friction_energy_share_opening"), float)
-                    and math.isfinite(r["friction_energy_share_opening"]))
-    m["medianFrictionEnergyShareOpening"] = num(shares[len(shares) // 2], 2) if shares else None
-    errors = [abs(r["energy_balance_error"]) for r in rows
-              if isinstance(r.get("energy_balance_error"), float)
-              and math.isfinite(r["energy_balance_error"])]
+    opened = [dict(r, **{k: r[k] / r["f"] for k in ("dissipative_friction_opening",
+                                                     "dissipative_friction_before_opening")
+                         if isinstance(r.get(k), float) and r["f"] > 0})
+              for r in grid if r.get("opening") is True]
+    def median(key):
+        values = finite_values(opened, key)
+        return statistics.median(values) if values else None
+    m["medianMuDissOpeningOverF"] = num(median("dissipative_friction_opening"), 2)
+    m["medianMuDissBeforeOverF"] = num(median("dissipative_friction_before_opening"), 2)
+    m["nMuDissRuns"] = num(len(finite_values(opened, "dissipative_friction_opening"))) if grid else None
+    m["medianFrictionEnergyShareOpening"] = num(median("friction_energy_share_opening"), 2)
+    errors = [abs(e) for e in finite_values(rows, "energy_balance_error")]
     m["maxEnergyError"] = num(max(errors), 2) if errors else None
     return m
 
@@ -287,16 +292,12 @@ def inside_wedge(boundary, nu, f):
     w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
     lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
                     else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
-    return math.isfinite(lower) and lower < f < (upper if not math.isnan(upper) else -math.inf)
+    return math.isfinite(lower) and lower < f < upper  # False for upper = nan
 
 
 def wedge_macros(rows, boundary):
     """Counts of the grid runs inside/outside the flutter wedge, with and without opening."""
-    ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
-    grid = [r for r in rows if matches(r, **ref)]
-    meshes = Counter(r.get("elements_per_H") for r in grid)
-    if meshes:
-        grid = [r for r in grid if close(r.get("elements_per_H"), meshes.most_common(1)[0][0])]
+    grid, _, _ = grid_rows(rows)
     names = ("nInsideWedge", "nOpeningInsideWedge", "nOutsideWedge", "nOpeningOutsideWedge")
     if not grid or not boundary:
         return {k: None for k in names}
@@ -310,12 +311,7 @@ def direction_switch_macros(rows, column="celerity", prefix="switch"):
     """For nu = 0.45 and 0.49: the largest f of the grid with a backward front and the smallest
     larger f with a forward one (the paper: back to +x at higher f); `column` = published for the
     paper's own values (table1.csv)."""
-    ref = {k: v for k, v in REFERENCE.items() if k not in ("nu", "f")}
-    grid = [r for r in rows if matches(r, **ref) and isinstance(r.get(column), float)
-            and math.isfinite(r[column])]
-    meshes = Counter(r.get("elements_per_H") for r in grid)
-    if meshes and None not in meshes:
-        grid = [r for r in grid if close(r.get("elements_per_H"), meshes.most_common(1)[0][0])]
+    grid = [r for r in grid_rows(rows)[0] if isinstance(r.get(column), float) and math.isfinite(r[column])]
     macros = {}
     for nu, name in ((0.45, prefix + "FNuFortyFive"), (0.49, prefix + "FNuFortyNine")):
         cells = sorted((r["f"], r[column]) for r in grid if close(r["nu"], nu))

@@ -64,18 +64,15 @@ COLUMNS = {
 
 
 def derived(row: dict) -> dict:
-    """Columns computed from others: the time step in m (dt c_s), c_p/c_s, the first drop's start
-    after the slip onset and its duration."""
+    """Columns computed from others: c_p/c_s, the first drop's start after the slip onset and its
+    duration."""
     def number(key):
         value = row.get(key)
         return value if isinstance(value, float) and math.isfinite(value) else math.nan
-    extra = {}
-    if "dt_times_cs" not in row:
-        extra["dt_times_cs"] = round(number("dt") * number("c_s"), 9)
-    extra["celerity_over_cs"] = number("celerity") / number("c_s")
-    extra["first_drop_start_after_onset"] = number("first_drop_start_time") - number("onset_time")
-    extra["first_drop_duration"] = number("first_drop_bottom_time") - number("first_drop_start_time")
-    return {**extra, **row}
+    return {**row,
+            "celerity_over_cs": number("celerity") / number("c_s"),
+            "first_drop_start_after_onset": number("first_drop_start_time") - number("onset_time"),
+            "first_drop_duration": number("first_drop_bottom_time") - number("first_drop_start_time")}
 
 
 def cell(value, fmt: str) -> str:

@@ -52,7 +52,7 @@ def run_config(spec: dict) -> dict:
                     "V0_over_cs": point["V0_over_cs"]},
         "friction": {"f": point["f"]},
         "time": {"t_end": times.t_end, "stop_after_opening": times.stop_after_opening,
-                 "dt_times_cs": point.get("dt_times_cs", 0.5)},
+                 "dt_times_cs": point["dt_times_cs"]},
         "perturbation": {"seed": point["seed"]},
     }
     if snapshots:
