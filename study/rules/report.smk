@@ -111,27 +111,31 @@ rule paper_variants:
     shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
 
 
-def paper_table_sets(name):
-    """[(label, sweep)] of one report table (config `paper.tables`)."""
-    return list(config["paper"]["tables"][name]["sets"].items())
+def paper_table_job(name):
+    """How `paper/generated/<name>.tex` is made (config `paper.tables`): the script, the table file
+    each sweep contributes, the script's options, and the [(label, sweep)] sets."""
+    spec = config["paper"]["tables"][name]
+    if spec["resolution"]:
+        return dict(script="paper/make_resolution_table.py", table="table1.csv",
+                    options=f"--tolerance {config['reference']['tolerance']}", sets=list(spec["sets"].items()))
+    if not spec.get("columns"):
+        raise ValueError(f"paper.tables.{name}: a sweep table needs `columns`")
+    return dict(script="paper/make_sweep_table.py", table="all_metrics.csv",
+                options="--columns " + " ".join(spec["columns"]), sets=list(spec["sets"].items()))
 
 
 rule paper_table:
     """A table of the report: per-run metrics of sweeps, or the published cells at several meshes."""
     input:
-        script=lambda wc: ("paper/make_resolution_table.py" if config["paper"]["tables"][wc.name]["resolution"]
-                           else "paper/make_sweep_table.py"),
-        tables=lambda wc: [f"results/{sweep}/table/" + ("table1.csv" if config["paper"]["tables"][wc.name]["resolution"]
-                                                        else "all_metrics.csv")
-                           for _, sweep in paper_table_sets(wc.name)],
+        script=lambda wc: paper_table_job(wc.name)["script"],
+        tables=lambda wc: [f"results/{sweep}/table/{paper_table_job(wc.name)['table']}"
+                           for _, sweep in paper_table_job(wc.name)["sets"]],
     output: "paper/generated/{name}.tex"
     wildcard_constraints: name="|".join(config["paper"]["tables"]) or "no-table"
     params:
         sets=lambda wc, input: " ".join(shlex.quote(f"{label}={path}")
-                                        for (label, _), path in zip(paper_table_sets(wc.name), input.tables)),
-        options=lambda wc: ("--tolerance " + str(config["reference"]["tolerance"])
-                            if config["paper"]["tables"][wc.name]["resolution"]
-                            else "--columns " + " ".join(config["paper"]["tables"][wc.name]["columns"])),
+                                        for (label, _), path in zip(paper_table_job(wc.name)["sets"], input.tables)),
+        options=lambda wc: paper_table_job(wc.name)["options"],
     log: "logs/paper_table_{name}.log"
     shell: "{PYTHON} {input.script} {params.sets} {params.options} -o {output} > {log} 2>&1"
 
