@@ -147,9 +147,7 @@ def build_fields(s: Scenario) -> dict:
     u_y = u_y + 1e-13  # round-off where closed
     if s.noise > 0:
         v = v + np.random.default_rng(s.seed).normal(0.0, s.noise, v.shape)
-    knots = s.ratio_knots or [(0.0, PRESHEAR * s.f), (s.t_onset, s.f), (s.t_pulses + 50, s.f),
-                              (s.t_pulses + 200, -0.2), (s.t_end, 0.6)]
-    kt, kr = zip(*knots)
+    kt, kr = zip(*ratio_knots(s))
     ratio = np.interp(tg, kt, kr) + s.ratio_chatter * (-1.0) ** np.arange(tg.size)
     n_force = p0 * lam * np.ones_like(tg)
     work = 1e-4 * tg
@@ -212,6 +210,14 @@ def write_run(path, s: Scenario) -> dict:
                 ds.attrs["unit"] = unit
                 ds.attrs["description"] = f"synthetic {name}"
     return d
+
+
+def ratio_knots(s: Scenario) -> list[tuple[float, float]]:
+    """(t, T/N) knots of the scenario's piecewise-linear T/N (before the chatter): its own, or
+    preshear -> f at the onset, held until 50 s after the pulses appear, down to -0.2 150 s later,
+    back to 0.6 at t_end."""
+    return s.ratio_knots or [(0.0, PRESHEAR * s.f), (s.t_onset, s.f), (s.t_pulses + 50, s.f),
+                             (s.t_pulses + 200, -0.2), (s.t_end, 0.6)]
 
 
 def paper_case(**changes) -> Scenario:
