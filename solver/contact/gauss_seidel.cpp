@@ -22,9 +22,10 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
   GaussSeidelReport report{0, 0.0, false};
   report.relaxation = relaxation;
   std::vector<int> n_status_changes(bounds.empty() ? 0 : n_nodes, 0);
-  // Period-2 orbit detection (plain pass only): r two sweeps back, and how many sweeps in a row
-  // came back to it while still changing by more than the tolerance.
-  Eigen::VectorXd r_previous = r, r_two_back = r;
+  // Period-2 orbit detection (plain pass only, from sweep kCycleWatchFrom on, so that the usual
+  // 10-25-sweep solves pay nothing): r two sweeps back, and how many sweeps in a row came back to it
+  // while still changing by more than the tolerance.
+  Eigen::VectorXd r_previous, r_two_back;
   int n_cycle_sweeps = 0;
   while (report.iterations < settings.max_iterations) {
     ++report.iterations;
@@ -54,11 +55,12 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
       report.converged = true;
       break;
     }
-    if (relaxation == 1) {
+    if (relaxation == 1 && report.iterations >= kCycleWatchFrom) {
       // Back where it was two sweeps ago (to 1e-3 of this sweep's change) on kCycleSweeps sweeps in a
       // row: a period-2 orbit that will never converge, so stop now instead of at max_iterations.
       // A converging iteration cannot show this (its changes would have to alternate without decaying).
-      const bool returned = (r - r_two_back).cwiseAbs().maxCoeff() <= 1e-3 * max_change;
+      const bool returned = report.iterations >= kCycleWatchFrom + 2 &&
+                            (r - r_two_back).cwiseAbs().maxCoeff() <= 1e-3 * max_change;
       n_cycle_sweeps = returned ? n_cycle_sweeps + 1 : 0;
       if (n_cycle_sweeps >= kCycleSweeps) break;
       r_two_back.swap(r_previous);

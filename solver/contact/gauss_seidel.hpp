@@ -46,8 +46,10 @@ struct GaussSeidelReport {
 /// symmetric (forward/backward) sweeps 26 %.
 inline constexpr double kFallbackRelaxation = 0.5;
 
-/// Sweeps in a row on a period-2 orbit after which the plain pass gives up (see above).
+/// Sweeps in a row on a period-2 orbit after which the plain pass gives up (see above), watched from
+/// sweep kCycleWatchFrom on (converging solves take 10-25 sweeps, up to ~740 in the campaign's runs).
 inline constexpr int kCycleSweeps = 10;
+inline constexpr int kCycleWatchFrom = 50;
 
 /// Status changes (open <-> closed) of one node in one solve after which its given bound is replaced
 /// by f r_y. Genuine changes during convergence are one or two; cycles repeat without end.
