@@ -1,0 +1,427 @@
+#include "io/run_writer.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "io/hdf5_support.hpp"
+#include "io/run_file.hpp"
+
+namespace slidewave {
+
+using h5::Handle;
+
+std::string partial_path_for(const std::string& h5_path) {
+  const std::string ext = ".h5";
+  const bool has_ext = h5_path.size() > ext.size() && h5_path.compare(h5_path.size() - ext.size(), ext.size(), ext) == 0;
+  return (has_ext ? h5_path.substr(0, h5_path.size() - ext.size()) : h5_path) + ".partial.h5";
+}
+
+namespace {
+
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+
+/// FNV-1a over whole elements (a double or an int as one 64-bit word): independent of how the rows
+/// were batched, so a digest computed while streaming equals one computed when reading back.
+template <typename T>
+std::uint64_t digest_update(std::uint64_t h, const T* data, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t word = 0;
+    std::memcpy(&word, data + i, sizeof(T));
+    h = (h ^ word) * kFnvPrime;
+  }
+  return h;
+}
+
+/// Chunk rows for about 32 KiB per chunk.
+hsize_t chunk_rows(std::size_t element_size, int n_cols) {
+  return std::max<hsize_t>(1, 32768 / (element_size * std::max(1, n_cols)));
+}
+
+struct DatasetText {
+  const char* unit;
+  const char* description;
+};
+
+void describe(hid_t set, const DatasetText& text, const std::string& file) {
+  h5::write_string_attribute(set, "unit", text.unit, file);
+  h5::write_string_attribute(set, "description", text.description, file);
+}
+
+/// A fixed-size dataset written at once, chunked as a whole with a checksum (and compressed if asked).
+template <typename T>
+void write_fixed(hid_t parent, const std::string& name, const std::vector<T>& data, hsize_t rows, hsize_t cols,
+                 const DatasetText& text, bool compress, const std::string& file) {
+  const int rank = cols ? 2 : 1;
+  const hsize_t dims[2] = {rows, cols};
+  const hsize_t chunk[2] = {std::max<hsize_t>(rows, 1), std::max<hsize_t>(cols, 1)};
+  Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  const std::string what = "create dataset " + name + " in";
+  h5::check(H5Pset_chunk(plist, rank, chunk), file, what);
+  if (compress) {
+    h5::check(H5Pset_shuffle(plist), file, what);
+    h5::check(H5Pset_deflate(plist, 4), file, what);
+  }
+  h5::check(H5Pset_fletcher32(plist), file, what);
+  const hid_t id = H5Dcreate2(parent, name.c_str(), h5::native_type<T>(), space, H5P_DEFAULT, plist, H5P_DEFAULT);
+  h5::check(id, file, what);
+  Handle set(id, H5Dclose);
+  if (!data.empty())
+    h5::check(H5Dwrite(set, h5::native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), file,
+              "write dataset " + name + " to");
+  describe(set, text, file);
+}
+
+template <typename T>
+std::vector<T> read_all(hid_t parent, const std::string& name, const std::string& file) {
+  const Handle set = h5::dataset_open(parent, name, file);
+  Handle space(H5Dget_space(set), H5Sclose);
+  std::vector<T> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  if (!data.empty())
+    h5::check(H5Dread(set, h5::native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), file,
+              "read dataset " + name + " from");
+  return data;
+}
+
+std::string snapshot_id(std::size_t k) {
+  char id[32];
+  std::snprintf(id, sizeof id, "%04zu", k);
+  return id;
+}
+
+}  // namespace
+
+/// One extendible dataset of a series: rows appended at the end, digest of every element written.
+struct RunWriter::Series {
+  Handle set;
+  hid_t type;
+  std::size_t element_size;
+  int n_cols;  ///< 0: one value per row (1-D dataset)
+  std::int64_t n_rows = 0;
+  std::uint64_t digest = kFnvOffset;
+
+  template <typename T>
+  static std::unique_ptr<Series> create(hid_t group, const std::string& name, int n_cols, const DatasetText& text,
+                                        const std::string& file) {
+    const int rank = n_cols ? 2 : 1;
+    const hsize_t dims[2] = {0, static_cast<hsize_t>(n_cols)};
+    const hsize_t max_dims[2] = {H5S_UNLIMITED, static_cast<hsize_t>(n_cols)};
+    const hsize_t chunk[2] = {chunk_rows(sizeof(T), n_cols), static_cast<hsize_t>(n_cols)};
+    Handle space(H5Screate_simple(rank, dims, max_dims), H5Sclose);
+    Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    const std::string what = "create dataset " + name + " in";
+    h5::check(H5Pset_chunk(plist, rank, chunk), file, what);
+    h5::check(H5Pset_fletcher32(plist), file, what);
+    const hid_t id = H5Dcreate2(group, name.c_str(), h5::native_type<T>(), space, H5P_DEFAULT, plist, H5P_DEFAULT);
+    h5::check(id, file, what);
+    auto series = std::make_unique<Series>();
+    series->set = Handle(id, H5Dclose);
+    series->type = h5::native_type<T>();
+    series->element_size = sizeof(T);
+    series->n_cols = n_cols;
+    describe(series->set, text, file);
+    return series;
+  }
+
+  /// Appends n_new rows from `data` (row-major, n_new * max(1, n_cols) elements).
+  template <typename T>
+  void append(const T* data, std::int64_t n_new, const std::string& file, const std::string& name) {
+    if (n_new <= 0) return;
+    const int rank = n_cols ? 2 : 1;
+    const std::string what = "append to " + name + " in";
+    const hsize_t new_dims[2] = {static_cast<hsize_t>(n_rows + n_new), static_cast<hsize_t>(n_cols)};
+    h5::check(H5Dset_extent(set, new_dims), file, what);
+    Handle file_space(H5Dget_space(set), H5Sclose);
+    const hsize_t start[2] = {static_cast<hsize_t>(n_rows), 0};
+    const hsize_t count[2] = {static_cast<hsize_t>(n_new), static_cast<hsize_t>(n_cols)};
+    h5::check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr), file, what);
+    Handle memory_space(H5Screate_simple(rank, count, nullptr), H5Sclose);
+    h5::check(H5Dwrite(set, type, memory_space, file_space, H5P_DEFAULT, data), file, what);
+    digest = digest_update(digest, data, static_cast<std::size_t>(n_new) * std::max(1, n_cols));
+    n_rows += n_new;
+  }
+};
+
+struct RunWriter::Files {
+  Handle file, interface, global, snapshots;
+  /// Closes the groups, then the file (so that the file really closes); returns the file's status.
+  herr_t close() {
+    snapshots.close();
+    interface.close();
+    global.close();
+    return file.close();
+  }
+};
+
+namespace {
+struct GlobalColumn {
+  const char* name;
+  std::vector<double> GlobalSeries::*values;
+  DatasetText text;
+};
+const GlobalColumn kGlobalColumns[] = {
+    {"t", &GlobalSeries::t, {"s", "time of every step, stage-3 clock"}},
+    {"T", &GlobalSeries::T, {"N/m", "tangential force on the interface, -sum R_t, per unit depth"}},
+    {"N", &GlobalSeries::N, {"N/m", "normal force on the interface, sum R_n, per unit depth"}},
+    {"T_over_N", &GlobalSeries::T_over_N, {"1", "apparent friction T/N"}},
+    {"energy_kinetic", &GlobalSeries::energy_kinetic, {"J/m", "kinetic energy 1/2 v.M v"}},
+    {"energy_elastic", &GlobalSeries::energy_elastic, {"J/m", "elastic energy 1/2 u.K u (includes the preload)"}},
+    {"work_external", &GlobalSeries::work_external, {"J/m", "work of the imposed top displacement since t = 0"}},
+    {"dissipation_friction", &GlobalSeries::dissipation_friction,
+     {"J/m", "frictional dissipation -sum 1/2 (R_t(n)+R_t(n+1)) du_x since t = 0"}},
+    {"work_contact_normal", &GlobalSeries::work_contact_normal,
+     {"J/m", "energy lost by the normal contact forces, -sum 1/2 (R_n(n)+R_n(n+1)) du_y"}},
+    {"energy_balance_residual", &GlobalSeries::energy_balance_residual,
+     {"J/m", "E_kin + E_el + D_fric + W_normal - E(0) - W_ext (HHT dissipation for alpha > 0)"}},
+    {"contact_residual", &GlobalSeries::contact_residual, {"1", "last sweep's max reaction change / (p0 h)"}},
+};
+const DatasetText kIterationsText{"1", "Gauss-Seidel sweeps of the step"};
+
+struct InterfaceColumn {
+  const char* name;
+  Series2D<double> InterfaceSeries::*values;
+  DatasetText text;
+};
+const InterfaceColumn kInterfaceColumns[] = {
+    {"slip_velocity", &InterfaceSeries::slip_velocity, {"m/s", "du_x/dt over the step ending at t (contact nodes)"}},
+    {"slip", &InterfaceSeries::slip, {"m", "u_x of the contact nodes relative to t = 0"}},
+    {"opening", &InterfaceSeries::opening, {"m", "u_y of the contact nodes (gap to the rigid flat)"}},
+    {"normal_traction", &InterfaceSeries::normal_traction, {"Pa", "contact pressure, compression positive (R_n/h)"}},
+    {"tangential_traction", &InterfaceSeries::tangential_traction,
+     {"Pa", "frictional traction, positive when resisting sliding in +x (-R_t/h)"}},
+};
+const DatasetText kInterfaceTimeText{"s", "output times, stage-3 clock"};
+const DatasetText kStateText{"1", "0 open, 1 stick, 2 slip"};
+const DatasetText kInterfaceXText{"m", "position of the contact nodes (x = lambda is x = 0)"};
+}  // namespace
+
+RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance)
+    : path_(std::move(working_path)), files_(std::make_unique<Files>()) {
+  h5::silence_errors();
+  errno = 0;
+  const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file < 0) throw IoError("cannot create " + path_ + ": " + h5::last_error_reason());
+  files_->file = Handle(file, H5Fclose);
+  try {
+    write_run_header(file, path_, config, provenance);
+    RunRecord nothing_yet;
+    nothing_yet.end_reason = "interrupted";  // what a killed run's partial file will say
+    write_run_outcome(file, path_, nothing_yet);
+  } catch (...) {
+    discard();
+    throw;
+  }
+}
+
+RunWriter::~RunWriter() {
+  series_.clear();
+  if (files_) files_->close();
+}
+
+void RunWriter::ensure_layout(const RunRecord& record) {
+  if (files_->interface.valid()) return;
+  const hid_t file = files_->file;
+  n_contact_ = record.interface.slip.n_cols;
+  interface_x_ = record.interface.x;
+  // A chunk of interface rows per drain of the record (and at least one row).
+  interface_block_rows_ = std::max<std::size_t>(1, chunk_rows(sizeof(double), n_contact_));
+  files_->interface = h5::group_create(file, "interface", path_);
+  files_->global = h5::group_create(file, "global", path_);
+  write_fixed(files_->interface, "x", record.interface.x, record.interface.x.size(), 0, kInterfaceXText, false, path_);
+  series_["/interface/t"] = Series::create<double>(files_->interface, "t", 0, kInterfaceTimeText, path_);
+  for (const auto& c : kInterfaceColumns)
+    series_[std::string("/interface/") + c.name] =
+        Series::create<double>(files_->interface, c.name, n_contact_, c.text, path_);
+  series_["/interface/state"] = Series::create<std::int8_t>(files_->interface, "state", n_contact_, kStateText, path_);
+  for (const auto& c : kGlobalColumns)
+    series_[std::string("/global/") + c.name] = Series::create<double>(files_->global, c.name, 0, c.text, path_);
+  series_["/global/contact_iterations"] =
+      Series::create<int>(files_->global, "contact_iterations", 0, kIterationsText, path_);
+}
+
+void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh) {
+  const hsize_t n_nodes = mesh.coordinates.size() / 2;
+  if (!files_->snapshots.valid()) {
+    files_->snapshots = h5::group_create(files_->file, "snapshots", path_);
+    write_fixed(files_->snapshots, "coordinates", mesh.coordinates, n_nodes, 2,
+                {"m", "node coordinates of the unwrapped mesh (the column x = lambda repeats x = 0)"}, true, path_);
+    write_fixed(files_->snapshots, "connectivity", mesh.connectivity, mesh.connectivity.size() / 4, 4,
+                {"1", "quadrilateral nodes, counter-clockwise"}, true, path_);
+    snapshot_mesh_ = mesh;
+  }
+  const std::string id = snapshot_id(static_cast<std::size_t>(position_.n_snapshots));
+  const Handle one = h5::group_create(files_->snapshots, id, path_);
+  h5::write_double_attribute(one, "t", snapshot.t, path_);
+  write_fixed(one, "displacement", snapshot.displacement, n_nodes, 2, {"m", "nodal displacement"}, true, path_);
+  write_fixed(one, "velocity", snapshot.velocity, n_nodes, 2, {"m/s", "nodal velocity"}, true, path_);
+  const std::string base = "/snapshots/" + id + "/";
+  position_.digests[base + "t"] = digest_update(kFnvOffset, &snapshot.t, 1);
+  position_.digests[base + "displacement"] =
+      digest_update(kFnvOffset, snapshot.displacement.data(), snapshot.displacement.size());
+  position_.digests[base + "velocity"] = digest_update(kFnvOffset, snapshot.velocity.data(), snapshot.velocity.size());
+  snapshot_times_.push_back(snapshot.t);
+  ++position_.n_snapshots;
+}
+
+void RunWriter::drain(RunRecord& record) {
+  if (record.interface.x.empty()) return;  // nothing recorded yet: the layout is not known
+  ensure_layout(record);
+  auto& s = record.interface;
+  const std::int64_t n_interface = static_cast<std::int64_t>(s.t.size());
+  series_["/interface/t"]->append(s.t.data(), n_interface, path_, "/interface/t");
+  for (const auto& c : kInterfaceColumns) {
+    const std::string name = std::string("/interface/") + c.name;
+    series_[name]->append((s.*c.values).data.data(), n_interface, path_, name);
+    (s.*c.values).data.clear();
+  }
+  series_["/interface/state"]->append(s.state.data.data(), n_interface, path_, "/interface/state");
+  s.state.data.clear();
+  s.t.clear();
+
+  auto& g = record.global;
+  const std::int64_t n_global = static_cast<std::int64_t>(g.t.size());
+  for (const auto& c : kGlobalColumns) {
+    const std::string name = std::string("/global/") + c.name;
+    series_[name]->append((g.*c.values).data(), n_global, path_, name);
+    (g.*c.values).clear();
+  }
+  series_["/global/contact_iterations"]->append(g.contact_iterations.data(), n_global, path_,
+                                                "/global/contact_iterations");
+  g.contact_iterations.clear();
+
+  for (const auto& snapshot : record.snapshots) write_snapshot(snapshot, record.snapshot_mesh);
+  record.snapshots.clear();
+
+  position_.n_global_rows += n_global;
+  position_.n_interface_rows += n_interface;
+  for (const auto& [name, series] : series_) position_.digests[name] = series->digest;
+}
+
+void RunWriter::flush_to_disk(RunRecord& record) {
+  drain(record);
+  write_run_outcome(files_->file, path_, record);
+  h5::flush_to_disk(files_->file, path_);
+}
+
+void RunWriter::finish(RunRecord& record) {
+  drain(record);
+  write_run_outcome(files_->file, path_, record);
+  series_.clear();
+  // Closing flushes what HDF5 still holds: a full disk shows here at the latest.
+  errno = 0;
+  h5::check(files_->close(), path_, "write");
+}
+
+void RunWriter::put_in_place(const std::string& final_path) {
+  // The sidecar is staged before the rename and renamed after it, so it never points at a missing file.
+  const std::string xdmf = xdmf_path_for(final_path), xdmf_staged = xdmf + ".tmp";
+  const bool with_snapshots = !snapshot_times_.empty();
+  if (with_snapshots) {
+    RunRecord outline;
+    outline.snapshot_mesh = snapshot_mesh_;
+    for (double t : snapshot_times_) outline.snapshots.push_back(Snapshot{t, {}, {}});
+    write_bulk_xdmf(xdmf_staged, base_name(final_path), outline);
+  }
+  if (std::rename(path_.c_str(), final_path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    if (with_snapshots) std::remove(xdmf_staged.c_str());
+    throw IoError("cannot rename " + path_ + " to " + final_path + ": " + reason);
+  }
+  path_ = final_path;
+  if (with_snapshots && std::rename(xdmf_staged.c_str(), xdmf.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(xdmf_staged.c_str());
+    throw IoError("cannot rename " + xdmf_staged + " to " + xdmf + ": " + reason);
+  }
+}
+
+void RunWriter::discard() noexcept {
+  series_.clear();
+  if (files_) files_->close();
+  std::remove(path_.c_str());
+}
+
+void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPosition& position) {
+  Handle earlier(H5Fopen(earlier_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!earlier.valid()) throw StreamMismatch("cannot open " + earlier_path + ": " + h5::last_error_reason());
+  try {
+    RunRecord block;
+    block.interface.x = read_all<double>(earlier, "/interface/x", earlier_path);
+    const int n_c = static_cast<int>(block.interface.x.size());
+    for (auto* s : {&block.interface.slip_velocity, &block.interface.slip, &block.interface.opening,
+                    &block.interface.normal_traction, &block.interface.tangential_traction})
+      s->n_cols = n_c;
+    block.interface.state.n_cols = n_c;
+    ensure_layout(block);
+    // Rows in blocks (memory stays flat), appended through the same path as during the run.
+    const auto read_rows = [&](const std::string& name, auto* out, std::int64_t first, std::int64_t n, int cols) {
+      using T = std::remove_pointer_t<decltype(out)>;
+      const Handle set = h5::dataset_open(earlier, name, earlier_path);
+      Handle space(H5Dget_space(set), H5Sclose);
+      hsize_t dims[2] = {0, 0};
+      H5Sget_simple_extent_dims(space, dims, nullptr);
+      if (static_cast<std::int64_t>(dims[0]) < first + n)
+        throw StreamMismatch(earlier_path + ": " + name + " holds " + std::to_string(dims[0]) + " rows, the checkpoint counts " +
+                             std::to_string(first + n));
+      const hsize_t start[2] = {static_cast<hsize_t>(first), 0}, count[2] = {static_cast<hsize_t>(n), static_cast<hsize_t>(cols)};
+      h5::check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr), earlier_path, "select in");
+      Handle memory(H5Screate_simple(cols ? 2 : 1, count, nullptr), H5Sclose);
+      h5::check(H5Dread(set, h5::native_type<T>(), memory, space, H5P_DEFAULT, out), earlier_path, "read " + name + " from");
+    };
+    const std::int64_t block_rows = static_cast<std::int64_t>(kGlobalBlockRows);
+    for (std::int64_t first = 0; first < position.n_global_rows; first += block_rows) {
+      const std::int64_t n = std::min(block_rows, position.n_global_rows - first);
+      for (const auto& c : kGlobalColumns) {
+        auto& v = block.global.*c.values;
+        v.resize(n);
+        read_rows(std::string("/global/") + c.name, v.data(), first, n, 0);
+      }
+      block.global.contact_iterations.resize(n);
+      read_rows("/global/contact_iterations", block.global.contact_iterations.data(), first, n, 0);
+      drain(block);
+    }
+    const std::int64_t interface_rows = static_cast<std::int64_t>(interface_block_rows_);
+    for (std::int64_t first = 0; first < position.n_interface_rows; first += interface_rows) {
+      const std::int64_t n = std::min(interface_rows, position.n_interface_rows - first);
+      block.interface.t.resize(n);
+      read_rows("/interface/t", block.interface.t.data(), first, n, 0);
+      for (const auto& c : kInterfaceColumns) {
+        auto& v = (block.interface.*c.values).data;
+        v.resize(n * n_c);
+        read_rows(std::string("/interface/") + c.name, v.data(), first, n, n_c);
+      }
+      block.interface.state.data.resize(n * n_c);
+      read_rows("/interface/state", block.interface.state.data.data(), first, n, n_c);
+      drain(block);
+    }
+    if (position.n_snapshots > 0) {
+      block.snapshot_mesh.coordinates = read_all<double>(earlier, "/snapshots/coordinates", earlier_path);
+      block.snapshot_mesh.connectivity = read_all<std::int64_t>(earlier, "/snapshots/connectivity", earlier_path);
+    }
+    for (std::int64_t k = 0; k < position.n_snapshots; ++k) {
+      const std::string group = "/snapshots/" + snapshot_id(static_cast<std::size_t>(k));
+      const Handle one = h5::group_open(earlier, group, earlier_path);
+      Snapshot snapshot{h5::read_double_attribute(one, "t", earlier_path),
+                        read_all<double>(one, "displacement", earlier_path),
+                        read_all<double>(one, "velocity", earlier_path)};
+      block.snapshots.push_back(std::move(snapshot));
+      drain(block);
+    }
+  } catch (const IoError& e) {
+    throw StreamMismatch(e.what());
+  }
+  if (position_.n_global_rows != position.n_global_rows || position_.n_interface_rows != position.n_interface_rows ||
+      position_.n_snapshots != position.n_snapshots)
+    throw StreamMismatch(earlier_path + ": row counts differ from the checkpoint's");
+  for (const auto& [name, digest] : position.digests) {
+    const auto found = position_.digests.find(name);
+    if (found == position_.digests.end() || found->second != digest)
+      throw StreamMismatch(earlier_path + ": " + name + " does not hold the bytes the checkpoint counted");
+  }
+}
+
+}  // namespace slidewave

@@ -1,0 +1,102 @@
+#pragma once
+// Streams run.h5 (docs/contracts.md section 2) while the run goes: the /interface and /global series
+// are chunked datasets extended by rows, snapshots are written as they come, the outcome attributes
+// are rewritten at every checkpoint and at the end. The RunRecord the loop appends to is only a
+// buffer: drain() moves its rows to the file, so memory stays flat with run length.
+//
+// Every dataset carries a Fletcher32 checksum (HDF5 reports a corrupted chunk on read). The streamed
+// series are not compressed, on purpose: an uncompressed chunk keeps its size and its place in the
+// file when a partial chunk is completed later, so after a kill the rows a checkpoint counted are
+// still where the file's last flushed index says (a compressed chunk would move to newly allocated
+// space). The write-once snapshot arrays are compressed (shuffle + deflate).
+//
+// A writer writes one working file (for a run: RUN.partial.h5); put_in_place() renames it to its
+// final name with the XDMF sidecars, only for a result (complete or contact failure).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "config/run_config.hpp"
+#include "io/run_attributes.hpp"
+#include "model/run_record.hpp"
+
+namespace slidewave {
+
+/// How far the stream is: rows written per series and a digest of each dataset's bytes (FNV-1a over
+/// its elements), so that --resume can prove that a partial file still holds what a checkpoint counted.
+struct StreamPosition {
+  std::int64_t n_global_rows = 0;
+  std::int64_t n_interface_rows = 0;
+  std::int64_t n_snapshots = 0;
+  std::map<std::string, std::uint64_t> digests;  ///< dataset path -> digest of its elements
+  bool operator==(const StreamPosition& o) const {
+    return n_global_rows == o.n_global_rows && n_interface_rows == o.n_interface_rows &&
+           n_snapshots == o.n_snapshots && digests == o.digests;
+  }
+};
+
+/// RUN.h5 -> RUN.partial.h5 (the extension .h5 is replaced if present, else appended to).
+std::string partial_path_for(const std::string& h5_path);
+
+/// The partial file no longer holds the rows a checkpoint counted (killed mid-write, edited, replaced).
+class StreamMismatch : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class RunWriter {
+ public:
+  /// Creates (or replaces) `working_path` with the header attributes and the outcome "interrupted",
+  /// complete = 0, until finish() says otherwise. Throws IoError naming the file and the reason.
+  RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance);
+  ~RunWriter();  ///< closes the file if still open (no rename, no removal)
+  RunWriter(const RunWriter&) = delete;
+  RunWriter& operator=(const RunWriter&) = delete;
+
+  /// Appends the rows and snapshots the record holds and removes them from it (interface x, the
+  /// snapshot mesh and the outcome fields stay). The record is then empty, ready for more rows.
+  void drain(RunRecord& record);
+  /// drain() when the record holds about a chunk of rows or a snapshot: cheap to call every step.
+  void drain_if_full(RunRecord& record) {
+    if (record.global.t.size() >= kGlobalBlockRows || record.interface.t.size() >= interface_block_rows_ ||
+        !record.snapshots.empty())
+      drain(record);
+  }
+  /// drain(), the outcome attributes, flush and fsync: what position() then counts is on disk.
+  void flush_to_disk(RunRecord& record);
+  /// drain(), the outcome attributes, close. Throws IoError (the file stays; see discard()).
+  void finish(RunRecord& record);
+
+  /// Renames the closed working file to `final_path` (atomic) and writes the XDMF sidecars beside it.
+  void put_in_place(const std::string& final_path);
+  /// Closes (if open) and removes the working file: nothing of value is in it.
+  void discard() noexcept;
+
+  /// Copies the first rows counted by `position` from an earlier partial file (same layout) into this
+  /// one and checks their digests: throws StreamMismatch when that file no longer holds them intact.
+  void copy_prefix(const std::string& earlier_path, const StreamPosition& position);
+
+  const StreamPosition& position() const { return position_; }
+  const std::string& path() const { return path_; }
+
+  static constexpr std::size_t kGlobalBlockRows = 1024;
+
+ private:
+  struct Series;
+  void ensure_layout(const RunRecord& record);
+  void write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh);
+
+  std::string path_;
+  struct Files;
+  std::unique_ptr<Files> files_;
+  std::map<std::string, std::unique_ptr<Series>> series_;  ///< by dataset path
+  StreamPosition position_;
+  std::size_t interface_block_rows_ = 256;
+  SnapshotMesh snapshot_mesh_;                             ///< kept for the XDMF sidecar
+  std::vector<double> snapshot_times_;                     ///< kept for the XDMF sidecar
+  std::vector<double> interface_x_;
+  int n_contact_ = 0;
+};
+
+}  // namespace slidewave
