@@ -3,18 +3,22 @@
 //   slidewave check study/examples/paper_nu0.2_f1.5.json
 //   slidewave run study/examples/paper_nu0.2_f1.5.json -o run.h5
 //   slidewave --version
-// Exit codes: 0 success, 1 run failed (output flushed and marked incomplete), 2 invalid input.
+// Exit codes: 0 success, 1 run failed (output flushed and marked incomplete), 2 invalid input (or a
+// checkpoint of another run with --resume), 3 interrupted (RUN.partial.h5 and RUN.checkpoint.h5 kept),
+// 4 I/O error (the message names the file and the reason).
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "config/run_config.hpp"
 #include "git_version.hpp"
 #include "io/progress.hpp"
-#include "io/run_file.hpp"
+#include "io/hdf5_support.hpp"
+#include "io/run_session.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 
@@ -40,6 +44,7 @@ std::string read_file(const std::string& path) {
 
 int main(int argc, char** argv) {
   using namespace slidewave;
+  h5::skip_library_cleanup_at_exit();  // before any HDF5 call: see io/hdf5_support.hpp
 
   // 1. Parse options.
   CLI::App app{"slidewave: elastodynamic sliding of a periodic layer on a rigid flat under Coulomb friction"};
@@ -51,6 +56,10 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", output_path, "output HDF5 file")->required();
   int threads = 1;
   run->add_option("--threads", threads, "threads of the BLAS/OpenMP under CHOLMOD")->check(CLI::Range(1, 256));
+  bool resume = false;
+  run->add_flag("--resume", resume,
+                "continue from RUN.checkpoint.h5 when it was written for this configuration and build "
+                "(without one: start from the beginning)");
   auto* check = app.add_subcommand("check", "validate a configuration and print it resolved");
   check->add_option("config", config_path, "run configuration (JSON)")->required();
   CLI11_PARSE(app, argc, argv);
@@ -75,25 +84,43 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_signal);
   std::string call;
   for (int i = 0; i < argc; ++i) call += (i ? " " : "") + std::string(argv[i]);
+  std::unique_ptr<RunSession> session;
   try {
+    // The output is streamed to RUN.partial.h5 and put in place at the end (io/run_session.hpp).
+    session = std::make_unique<RunSession>(output_path, config, Provenance{call, read_file(config_path)}, resume,
+                                           std::cerr);
     const LayerModel model(config);
     const ProgressPrinter printer(config.output.progress, model.mesh.n_contact());
     const auto progress = [&](double t, double t_end, double rate, double tn, int n_slip) {
       printer.report(t, t_end, rate, tn, n_slip, model.d.dt);
     };
-    const RunRecord record = simulate(model, progress, &g_stop);
+    const RunRecord record = simulate(model, progress, &g_stop, nullptr, session.get());
     printer.finish();
 
-    // 4. Write the output atomically, complete or not.
-    write_run_file(output_path, config, record, {call, read_file(config_path)});
+    // 4. Say how the run ended.
+    if (record.end_reason == "interrupted") {
+      std::cerr << "slidewave: run interrupted at step " << record.n_steps_done << ", t = "
+                << record.n_steps_done * model.d.dt << " s; " << output_path << " not written; "
+                << session->partial_path() << " holds what was computed (complete = 0) and "
+                << session->checkpoint_path() << " continues it with --resume\n";
+      return 3;
+    }
     if (!record.complete) {
       std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
                 << ", t = " << record.n_steps_done * model.d.dt << " s; " << output_path
                 << " holds what was computed and is marked complete = 0\n";
       return 1;
     }
+  } catch (const ResumeRefused& e) {
+    std::cerr << "slidewave: " << e.what() << "\n";
+    return 2;
+  } catch (const IoError& e) {
+    const std::string kept = session ? session->abandon() : "";
+    std::cerr << "slidewave: error: " << e.what() << (kept.empty() ? "" : "; " + kept) << "\n";
+    return 4;
   } catch (const std::exception& e) {
-    std::cerr << "slidewave: error: " << e.what() << "\n";
+    const std::string kept = session ? session->abandon() : "";
+    std::cerr << "slidewave: error: " << e.what() << (kept.empty() ? "" : "; " + kept) << "\n";
     return 1;
   }
   return 0;

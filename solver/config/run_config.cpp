@@ -215,6 +215,8 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   output.integer("interface_stride", c.output.interface_stride, 1, 1000000, "integer >= 1");
   output.number_list("snapshot_times", c.output.snapshot_times, "list of times >= 0 (s)");
   output.choice("progress", c.output.progress, kProgress);
+  output.number("checkpoint_interval", c.output.checkpoint_interval, 0, inf, false, true,
+                 "checkpoint_interval >= 0 (s of wall time; 0: only at SIGINT/SIGTERM)");
   output.reject_unknown();
 
   // Cross-key rules: the period must hold a whole number of elements, at least 3 (periodic ties).
@@ -284,7 +286,8 @@ nlohmann::json RunConfig::to_json() const {
   j["numerics"] = {{"linear_solver", name_of(kLinearSolver, numerics.linear_solver)}};
   j["output"] = {{"interface_stride", output.interface_stride},
                  {"snapshot_times", output.snapshot_times},
-                 {"progress", name_of(kProgress, output.progress)}};
+                 {"progress", name_of(kProgress, output.progress)},
+                 {"checkpoint_interval", output.checkpoint_interval}};
   return j;
 }
 

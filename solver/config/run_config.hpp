@@ -48,6 +48,7 @@ struct OutputConfig {
   int interface_stride = 4;
   std::vector<double> snapshot_times;
   ProgressMode progress = ProgressMode::automatic;
+  double checkpoint_interval = 300.0;  ///< wall-time seconds between checkpoints (0: only at SIGINT/SIGTERM)
 };
 
 /// Constants that follow from the configuration, computed in one place (and written to run.h5).

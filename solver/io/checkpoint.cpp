@@ -78,9 +78,9 @@ void write_contents(hid_t file, const std::string& path, const Checkpoint& c) {
   h5::write_string_attribute(stream, "digest_names", names, path);
   write_array(stream, "digests", digests, path);
   const Handle reals = h5::group_create(file, "reals", path);
-  for (const auto& [name, values] : c.reals) write_array(reals, name, values, path);
+  for (const auto& [name, values] : c.state.reals) write_array(reals, name, values, path);
   const Handle integers = h5::group_create(file, "integers", path);
-  for (const auto& [name, values] : c.integers) write_array(integers, name, values, path);
+  for (const auto& [name, values] : c.state.integers) write_array(integers, name, values, path);
 }
 
 /// Flattens a JSON object to "group.key" -> value text.
@@ -157,9 +157,9 @@ Checkpoint read_checkpoint(const std::string& path) {
     c.stream.digests[names.substr(start, end - start)] = digest;
   }
   const Handle reals = h5::group_open(file, "reals", path);
-  for (const auto& name : members(reals)) c.reals[name] = read_array<double>(reals, name, path);
+  for (const auto& name : members(reals)) c.state.reals[name] = read_array<double>(reals, name, path);
   const Handle integers = h5::group_open(file, "integers", path);
-  for (const auto& name : members(integers)) c.integers[name] = read_array<std::int64_t>(integers, name, path);
+  for (const auto& name : members(integers)) c.state.integers[name] = read_array<std::int64_t>(integers, name, path);
   return c;
 }
 

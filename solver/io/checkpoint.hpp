@@ -11,6 +11,7 @@
 
 #include "config/run_config.hpp"
 #include "io/run_writer.hpp"
+#include "model/run_observer.hpp"
 
 namespace slidewave {
 
@@ -18,8 +19,7 @@ struct Checkpoint {
   std::string config_json;  ///< resolved configuration of the run (RunConfig::to_json().dump())
   std::string build;        ///< current_build() of the solver that wrote it
   StreamPosition stream;    ///< what RUN.partial.h5 holds at this state
-  std::map<std::string, std::vector<double>> reals;           ///< loop state, by name
-  std::map<std::string, std::vector<std::int64_t>> integers;  ///< loop state, by name
+  LoopState state;          ///< the loop's evolving state (model/run_observer.hpp)
 };
 
 /// RUN.h5 -> RUN.checkpoint.h5 (the extension .h5 is replaced if present, else appended to).

@@ -9,6 +9,8 @@ namespace slidewave::h5 {
 
 void silence_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
+void skip_library_cleanup_at_exit() { H5dont_atexit(); }
+
 namespace {
 
 struct ReasonSearch {

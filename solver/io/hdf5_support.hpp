@@ -23,6 +23,11 @@ namespace h5 {
 /// Turns off HDF5's automatic error printing: failures become IoError with our message.
 void silence_errors();
 
+/// Keeps HDF5 from closing, at exit, files whose close failed (HDF5 1.10 then crashes in
+/// H5F_term_package: a full disk turned into exit 139). Every file is closed explicitly anyway.
+/// Call first thing in main(), before any other HDF5 call (later it has no effect).
+void skip_library_cleanup_at_exit();
+
 /// The reason of the last HDF5 failure: the OS error text of the innermost error on HDF5's stack
 /// ("File too large", "No space left on device") when there is one, else HDF5's own description.
 std::string last_error_reason();

@@ -303,7 +303,13 @@ void RunWriter::drain(RunRecord& record) {
 
 void RunWriter::flush_to_disk(RunRecord& record) {
   drain(record);
-  write_run_outcome(files_->file, path_, record);
+  RunRecord outcome_if_killed;
+  outcome_if_killed.complete = false;
+  outcome_if_killed.end_reason = "interrupted";
+  outcome_if_killed.n_steps_done = record.n_steps_done;
+  outcome_if_killed.t_first_opening = record.t_first_opening;
+  outcome_if_killed.u_x_preshear = record.u_x_preshear;
+  write_run_outcome(files_->file, path_, outcome_if_killed);
   h5::flush_to_disk(files_->file, path_);
 }
 
@@ -337,6 +343,17 @@ void RunWriter::put_in_place(const std::string& final_path) {
     std::remove(xdmf_staged.c_str());
     throw IoError("cannot rename " + xdmf_staged + " to " + xdmf + ": " + reason);
   }
+}
+
+void RunWriter::move_to(const std::string& new_path) {
+  if (std::rename(path_.c_str(), new_path.c_str()) != 0)
+    throw IoError("cannot rename " + path_ + " to " + new_path + ": " + std::strerror(errno));
+  path_ = new_path;
+}
+
+void RunWriter::close() noexcept {
+  series_.clear();
+  if (files_) files_->close();
 }
 
 void RunWriter::discard() noexcept {

@@ -63,15 +63,20 @@ class RunWriter {
         !record.snapshots.empty())
       drain(record);
   }
-  /// drain(), the outcome attributes, flush and fsync: what position() then counts is on disk.
+  /// drain(), flush and fsync: what position() then counts is on disk. The outcome attributes then say
+  /// what a kill would leave: complete = 0, end_reason interrupted, the record's n_steps_done.
   void flush_to_disk(RunRecord& record);
   /// drain(), the outcome attributes, close. Throws IoError (the file stays; see discard()).
   void finish(RunRecord& record);
 
   /// Renames the closed working file to `final_path` (atomic) and writes the XDMF sidecars beside it.
   void put_in_place(const std::string& final_path);
+  /// Renames the working file (open or not) to `new_path`, which it then writes.
+  void move_to(const std::string& new_path);
   /// Closes (if open) and removes the working file: nothing of value is in it.
   void discard() noexcept;
+  /// Closes the working file if open, without writing the outcome (after an error: the file stays).
+  void close() noexcept;
 
   /// Copies the first rows counted by `position` from an earlier partial file (same layout) into this
   /// one and checks their digests: throws StreamMismatch when that file no longer holds them intact.

@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <random>
+#include <stdexcept>
 
 #include "contact/delassus.hpp"
 #include "contact/gauss_seidel.hpp"
@@ -85,7 +87,7 @@ class Stopwatch {
 }  // namespace
 
 RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const std::atomic<bool>* stop_requested,
-                   StepProfile* profile) {
+                   StepProfile* profile, RunObserver* observer) {
   Stopwatch watch(profile);
   const auto& c = m.config;
   const auto& d = m.d;
@@ -192,8 +194,6 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   record_interface(rec, 0, m, u, u.head(n_c), u_contact_start, r, state, dt);
   maybe_snapshot(0);
 
-  watch.lap(&StepProfile::setup);
-
   // 5. Time loop.
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, d.p0 * d.h};
   const double threshold_open = opening_threshold(c);
@@ -201,11 +201,61 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const int n_steps_max = static_cast<int>(std::ceil(t_end / dt - 1e-9));
   rec.end_reason = "t_end";
   rec.complete = true;
+
+  // The evolving state, for checkpoints (--resume continues from it bit for bit).
+  std::vector<Eigen::VectorXd*> carried = {&u, &v, &acc, &r, &Ku, &Mu_f, &Mv_f, &Ma_f, &F_top};
+  const char* carried_names[] = {"u", "v", "acc", "r", "Ku", "Mu_f", "Mv_f", "Ma_f", "F_top"};
+  const RunObserver::Capture capture = [&]() {
+    LoopState out;
+    for (size_t i = 0; i < carried.size(); ++i)
+      out.reals[carried_names[i]].assign(carried[i]->data(), carried[i]->data() + carried[i]->size());
+    out.reals["regularized_normal"] = regularized_normal;
+    out.reals["scalars"] = {work_external, dissipation, work_normal, t_end, rec.t_first_opening};
+    auto& contact_state = out.integers["contact_state"];
+    for (auto s : state) contact_state.push_back(static_cast<std::int64_t>(s));
+    out.integers["counters"] = {rec.n_steps_done, static_cast<std::int64_t>(next_snapshot),
+                                rec.end_reason == "stop_after_opening" ? 1 : 0};
+    return out;
+  };
+  int first_step = 1;
+  if (const LoopState* start = observer ? observer->start_state() : nullptr) {
+    for (size_t i = 0; i < carried.size(); ++i) {
+      const auto& values = start->reals.at(carried_names[i]);
+      if (static_cast<Eigen::Index>(values.size()) != carried[i]->size())
+        throw std::runtime_error(std::string("checkpoint: ") + carried_names[i] + " has the wrong size");
+      std::copy(values.begin(), values.end(), carried[i]->data());
+    }
+    regularized_normal = start->reals.at("regularized_normal");
+    const auto& scalars = start->reals.at("scalars");
+    work_external = scalars.at(0), dissipation = scalars.at(1), work_normal = scalars.at(2), t_end = scalars.at(3);
+    rec.t_first_opening = scalars.at(4);
+    const auto& contact_state = start->integers.at("contact_state");
+    std::transform(contact_state.begin(), contact_state.end(), state.begin(),
+                   [](std::int64_t s) { return static_cast<ContactState>(s); });
+    const auto& counters = start->integers.at("counters");
+    rec.n_steps_done = static_cast<int>(counters.at(0));
+    next_snapshot = static_cast<size_t>(counters.at(1));
+    if (counters.at(2)) rec.end_reason = "stop_after_opening";
+    first_step = rec.n_steps_done + 1;
+    // The rows up to that state are already in the output.
+    rec.snapshots.clear();
+    RunRecord empty_rows;
+    rec.global = empty_rows.global;
+    rec.interface.t.clear();
+    for (auto* series : {&rec.interface.slip_velocity, &rec.interface.slip, &rec.interface.opening,
+                         &rec.interface.normal_traction, &rec.interface.tangential_traction})
+      series->data.clear();
+    rec.interface.state.data.clear();
+  } else if (observer) {
+    observer->after_step(rec, capture);
+  }
+
+  watch.lap(&StepProfile::setup);
   auto wall_last = std::chrono::steady_clock::now();
   int steps_since_report = 0;
   Eigen::VectorXd u_tilde(n_f), Mu_tilde(n_f), rhs(n_f), u_free(n_f), q(n_c), y(n_c), r_new(n_c), Ku_next(n_f + n_t),
       Ma_next(n_f);
-  for (int step = 1; step <= n_steps_max; ++step) {
+  for (int step = first_step; step <= n_steps_max; ++step) {
     const double t = step * dt;
     // The run ends with the first step that reaches t_end (t_end may have been shortened by
     // stop_after_opening): the last time is in [t_end, t_end + dt).
@@ -283,6 +333,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     work_external += 0.5 * (F_top + F_top_next).dot(u_d - u_top_prev);
     F_top = F_top_next;
     record_global(t, report.iterations, report.residual);
+    const double T_over_N_last = g.T_over_N.back();  // the observer may drain the record
     rec.n_steps_done = step;
     if (step % c.output.interface_stride == 0)
       record_interface(rec, t, m, u, u_contact_prev, u_contact_start, r, state, dt);
@@ -300,6 +351,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
         }
     }
 
+    if (observer) observer->after_step(rec, capture);
     watch.lap(&StepProfile::diagnostics);
     if (profile) profile->steps = step;
     ++steps_since_report;
@@ -309,12 +361,13 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       if (elapsed >= 1.0) {
         int n_slip = 0;
         for (auto s : state) n_slip += s == ContactState::slip;
-        progress(t, t_end, steps_since_report / elapsed, g.T_over_N.back(), n_slip);
+        progress(t, t_end, steps_since_report / elapsed, T_over_N_last, n_slip);
         wall_last = now;
         steps_since_report = 0;
       }
     }
   }
+  if (observer) observer->at_end(rec, capture);
   return rec;
 }
 

@@ -12,6 +12,7 @@
 #include <functional>
 
 #include "model/layer_model.hpp"
+#include "model/run_observer.hpp"
 #include "model/run_record.hpp"
 #include "model/step_profile.hpp"
 
@@ -24,8 +25,11 @@ using ProgressCallback = std::function<void(double, double, double, double, int)
 /// returned with complete = false and end_reason = "contact_not_converged".
 /// @param stop_requested  polled every step (signal handlers set it); ends the run as "interrupted"
 /// @param profile         if given, receives the wall-time split (bench/ only)
+/// @param observer        if given, sees the record after every step (streaming, checkpoints) and may
+///                        give a state to continue from (model/run_observer.hpp)
 RunRecord simulate(const LayerModel& model, const ProgressCallback& progress = {},
-                   const std::atomic<bool>* stop_requested = nullptr, StepProfile* profile = nullptr);
+                   const std::atomic<bool>* stop_requested = nullptr, StepProfile* profile = nullptr,
+                   RunObserver* observer = nullptr);
 
 /// Threshold above which a contact node counts as open (m): 1 % of the preload displacement |Uy|
 /// (the same as analysis/opening.py, which documents the evidence for it).

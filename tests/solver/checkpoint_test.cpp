@@ -26,10 +26,10 @@ Checkpoint sample(const RunConfig& config) {
   c.stream.n_interface_rows = 309;
   c.stream.n_snapshots = 2;
   c.stream.digests = {{"/global/T", 0xfedcba9876543210ull}, {"/interface/state", 1}, {"/snapshots/0001/t", 0}};
-  c.reals["u"] = {1.0, -0.0, std::nan(""), std::numeric_limits<double>::denorm_min(), 1e308, M_PI};
-  c.reals["empty"] = {};
-  c.integers["step"] = {42};
-  c.integers["state"] = {std::numeric_limits<std::int64_t>::min(), -1, 0, std::numeric_limits<std::int64_t>::max()};
+  c.state.reals["u"] = {1.0, -0.0, std::nan(""), std::numeric_limits<double>::denorm_min(), 1e308, M_PI};
+  c.state.reals["empty"] = {};
+  c.state.integers["step"] = {42};
+  c.state.integers["state"] = {std::numeric_limits<std::int64_t>::min(), -1, 0, std::numeric_limits<std::int64_t>::max()};
   return c;
 }
 
@@ -47,9 +47,9 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   EXPECT_EQ(read.config_json, written.config_json);
   EXPECT_EQ(read.build, written.build);
   EXPECT_TRUE(read.stream == written.stream);
-  ASSERT_EQ(read.reals.size(), written.reals.size());
-  for (const auto& [name, values] : written.reals) EXPECT_TRUE(same_bits(read.reals.at(name), values)) << name;
-  EXPECT_EQ(read.integers, written.integers);
+  ASSERT_EQ(read.state.reals.size(), written.state.reals.size());
+  for (const auto& [name, values] : written.state.reals) EXPECT_TRUE(same_bits(read.state.reals.at(name), values)) << name;
+  EXPECT_EQ(read.state.integers, written.state.integers);
 }
 
 TEST(Checkpoint, ReplacesAtomicallyAndAFailedWriteKeepsTheEarlierOne) {
@@ -57,9 +57,9 @@ TEST(Checkpoint, ReplacesAtomicallyAndAFailedWriteKeepsTheEarlierOne) {
   const RunConfig config = testing::make_config();
   Checkpoint c = sample(config);
   write_checkpoint(dir / "run.checkpoint.h5", c);
-  c.integers["step"] = {43};
+  c.state.integers["step"] = {43};
   write_checkpoint(dir / "run.checkpoint.h5", c);
-  EXPECT_EQ(read_checkpoint(dir / "run.checkpoint.h5").integers.at("step"), std::vector<std::int64_t>{43});
+  EXPECT_EQ(read_checkpoint(dir / "run.checkpoint.h5").state.integers.at("step"), std::vector<std::int64_t>{43});
   // The target is made unreplaceable (a non-empty folder): the rename fails, the temporary goes.
   const TempDir blocked("checkpoint_blocked");
   std::filesystem::create_directories(blocked.path / "run.checkpoint.h5" / "inside");

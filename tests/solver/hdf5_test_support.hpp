@@ -12,6 +12,9 @@
 
 namespace slidewave::testing {
 
+/// As in main(): a test that makes a close fail (full disk) must not crash the binary at exit.
+inline const bool kSkipHdf5CleanupAtExit = (H5dont_atexit(), true);
+
 struct TempDir {
   std::filesystem::path path;
   explicit TempDir(const std::string& name)

@@ -1,0 +1,38 @@
+#pragma once
+// What the time loop offers to the outside while it runs: the record after every step (a streaming
+// writer drains it, so the series do not pile up in memory), its evolving state as named arrays when
+// a checkpoint is due, and a state to start from instead of t = 0 (--resume).
+//
+// LoopState holds every quantity that one step carries to the next, bit for bit; quantities that the
+// setup recomputes identically (matrices, preload, perturbation, E(0)) are not in it. Continuing
+// from a captured state therefore gives the same steps, bit for bit, as the uninterrupted loop.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "model/run_record.hpp"
+
+namespace slidewave {
+
+struct LoopState {
+  std::map<std::string, std::vector<double>> reals;
+  std::map<std::string, std::vector<std::int64_t>> integers;
+};
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  using Capture = std::function<LoopState()>;
+  /// After each step's rows are recorded (and once after the rows of t = 0, at step 0).
+  /// `capture` returns the state after that step; call it only when needed (it copies the state).
+  virtual void after_step(RunRecord& record, const Capture& capture) = 0;
+  /// When the loop has ended, for any reason, with the state after the last completed step.
+  virtual void at_end(RunRecord& record, const Capture& capture) = 0;
+  /// State to continue from (nullptr: start at t = 0). The record then starts empty: the rows up to
+  /// that state are already in the output.
+  virtual const LoopState* start_state() const { return nullptr; }
+};
+
+}  // namespace slidewave

@@ -1,0 +1,176 @@
+"""Kill and resume (issue 11, items 2 and 12): a run killed with SIGKILL or stopped with SIGTERM at
+several points continues with `slidewave run CONFIG -o RUN.h5 --resume` and ends with datasets byte
+for byte equal to an uninterrupted run; a stopped run (exit 3) never creates or replaces RUN.h5 and
+leaves RUN.partial.h5 (complete = 0, end_reason interrupted) with RUN.checkpoint.h5; a checkpoint of
+another configuration is refused (exit 2) naming the key; without a checkpoint --resume starts over.
+
+Self-contained: runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN) in temporary folders."""
+
+import json
+import os
+import shutil
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+
+# H/16 with a short step: ~30000 steps, a few seconds of wall time; checkpoints every 0.2 s.
+CONFIG = {
+    "mesh": {"elements_per_H": 16},
+    "friction": {"f": 1.5},
+    "time": {"t_end": 1200.0, "dt_times_cs": 0.03},
+    "output": {"interface_stride": 3, "snapshot_times": [0, 400, 900], "progress": "never",
+               "checkpoint_interval": 0.2},
+}
+
+
+def solver():
+    if not (SOLVER.is_file() and os.access(SOLVER, os.X_OK)):
+        if os.environ.get("CI") == "true":
+            pytest.fail(f"solver binary {SOLVER} not built")
+        pytest.skip(f"solver binary {SOLVER} not built")
+    return str(SOLVER)
+
+
+def write_config(folder, config=CONFIG):
+    path = Path(folder) / "run.json"
+    path.write_text(json.dumps(config))
+    return path
+
+
+def run(config_path, output, *extra, timeout=600):
+    return subprocess.run([solver(), "run", str(config_path), "-o", str(output), *extra],
+                          capture_output=True, text=True, timeout=timeout)
+
+
+def datasets(path):
+    """Every dataset of an HDF5 file: name -> (dtype, shape, bytes)."""
+    out = {}
+    with h5py.File(path, "r") as f:
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset):
+                value = obj[()]
+                out[name] = (value.dtype.str, value.shape, np.asarray(value).tobytes())
+        f.visititems(visit)
+    return out
+
+
+def assert_same_datasets(a, b):
+    da, db = datasets(a), datasets(b)
+    assert sorted(da) == sorted(db), "dataset names differ"
+    differing = [name for name in da if da[name] != db[name]]
+    assert not differing, f"datasets differ: {differing}"
+
+
+def attributes(path):
+    with h5py.File(path, "r") as f:
+        return {key: (value.decode() if isinstance(value, bytes) else value) for key, value in f.attrs.items()}
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    """The uninterrupted run, and how long it takes."""
+    folder = tmp_path_factory.mktemp("reference")
+    start = time.monotonic()
+    result = run(write_config(folder), folder / "RUN.h5")
+    elapsed = time.monotonic() - start
+    assert result.returncode == 0, result.stderr
+    assert attributes(folder / "RUN.h5")["complete"] == 1
+    assert sorted(p.name for p in folder.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"]
+    return folder / "RUN.h5", elapsed
+
+
+def start_and_signal(folder, delay, signum):
+    process = subprocess.Popen([solver(), "run", str(write_config(folder)), "-o", str(folder / "RUN.h5")],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(delay)
+    process.send_signal(signum)
+    _, stderr = process.communicate(timeout=600)
+    return process.returncode, stderr
+
+
+@pytest.mark.parametrize("fraction", [0.15, 0.4, 0.65])
+@pytest.mark.parametrize("signum", [signal.SIGKILL, signal.SIGTERM], ids=["kill", "term"])
+def test_resume_after_a_signal_is_bit_identical(tmp_path, reference, fraction, signum):
+    reference_file, elapsed = reference
+    code, stderr = start_and_signal(tmp_path, fraction * elapsed, signum)
+    if code == 0:
+        pytest.skip("the run finished before the signal (machine faster than the reference run)")
+    names = {p.name for p in tmp_path.iterdir()}
+    assert "RUN.h5" not in names, "an interrupted run must not create RUN.h5"
+    if signum == signal.SIGTERM:
+        assert code == 3, stderr
+        assert "interrupted" in stderr
+        assert {"RUN.partial.h5", "RUN.checkpoint.h5"} <= names
+        partial = attributes(tmp_path / "RUN.partial.h5")
+        assert partial["complete"] == 0
+        assert partial["end_reason"] == "interrupted"
+        assert partial["n_steps_done"] > 0
+    else:
+        assert code == -signal.SIGKILL
+    had_checkpoint = (tmp_path / "RUN.checkpoint.h5").exists()
+
+    resumed = run(tmp_path / "run.json", tmp_path / "RUN.h5", "--resume")
+    assert resumed.returncode == 0, resumed.stderr
+    if had_checkpoint:  # also after kill -9: the rows the checkpoint counted survive in RUN.partial.h5
+        assert "resuming from step" in resumed.stderr, resumed.stderr
+    assert attributes(tmp_path / "RUN.h5")["complete"] == 1
+    assert_same_datasets(tmp_path / "RUN.h5", reference_file)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"], \
+        "checkpoint, partial file and temporaries are gone once RUN.h5 is complete"
+
+
+def test_stopped_rerun_leaves_the_complete_file_untouched(tmp_path, reference):
+    reference_file, elapsed = reference
+    shutil.copy(reference_file, tmp_path / "RUN.h5")
+    before = (tmp_path / "RUN.h5").read_bytes()
+    stat_before = os.stat(tmp_path / "RUN.h5")
+    code, stderr = start_and_signal(tmp_path, 0.4 * elapsed, signal.SIGTERM)
+    assert code == 3, stderr
+    assert (tmp_path / "RUN.h5").read_bytes() == before
+    assert os.stat(tmp_path / "RUN.h5").st_mtime_ns == stat_before.st_mtime_ns
+    assert attributes(tmp_path / "RUN.partial.h5")["complete"] == 0
+
+
+def test_checkpoint_of_another_configuration_is_refused(tmp_path, reference):
+    _, elapsed = reference
+    code, stderr = start_and_signal(tmp_path, 0.4 * elapsed, signal.SIGTERM)
+    assert code == 3, stderr
+    changed = json.loads(json.dumps(CONFIG))
+    changed["friction"]["f"] = 1.4
+    partial_before = (tmp_path / "RUN.partial.h5").read_bytes()
+    checkpoint_before = (tmp_path / "RUN.checkpoint.h5").read_bytes()
+    refused = run(write_config(tmp_path, changed), tmp_path / "RUN.h5", "--resume")
+    assert refused.returncode == 2, refused.stderr
+    assert "friction.f" in refused.stderr and "1.4" in refused.stderr, refused.stderr
+    assert "RUN.checkpoint.h5" in refused.stderr
+    assert not (tmp_path / "RUN.h5").exists()
+    assert (tmp_path / "RUN.partial.h5").read_bytes() == partial_before, "a refusal changes nothing"
+    assert (tmp_path / "RUN.checkpoint.h5").read_bytes() == checkpoint_before
+
+
+def test_resume_without_checkpoint_starts_over(tmp_path, reference):
+    reference_file, _ = reference
+    result = run(write_config(tmp_path), tmp_path / "RUN.h5", "--resume")
+    assert result.returncode == 0, result.stderr
+    assert_same_datasets(tmp_path / "RUN.h5", reference_file)
+
+
+def test_partial_file_without_the_checkpointed_rows_starts_over(tmp_path, reference):
+    reference_file, elapsed = reference
+    code, stderr = start_and_signal(tmp_path, 0.5 * elapsed, signal.SIGTERM)
+    assert code == 3, stderr
+    with h5py.File(tmp_path / "RUN.partial.h5", "r+") as f:  # rows changed behind the checkpoint's back
+        f["global/T"][0] = 1.0
+    result = run(tmp_path / "run.json", tmp_path / "RUN.h5", "--resume")
+    assert result.returncode == 0, result.stderr
+    assert "cannot resume" in result.stderr and "/global/T" in result.stderr and "starting over" in result.stderr
+    assert_same_datasets(tmp_path / "RUN.h5", reference_file)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"]
