@@ -105,11 +105,15 @@ def theory_celerity(nu, f):
     return -supersonic.supersonic_trace_speed(nu, f, c_s)
 
 
-def table_rows(results, reference):
+def collect(results, reference):
+    """{nu: (published {f: celerity}, measured {column: {f: celerity}})}: every input read once."""
+    return {nu: (published(reference, nu), measured(results, nu)) for nu in NU_VALUES}
+
+
+def table_rows(data):
     """One row per (nu, f) where the paper or any series has a backward celerity."""
     rows = []
-    for nu in NU_VALUES:
-        paper, ours = published(reference, nu), measured(results, nu)
+    for nu, (paper, ours) in data.items():
         fs = set(paper)
         for values in ours.values():
             fs |= {f for f, c in values.items() if math.isfinite(c) and c < 0.0}
@@ -140,17 +144,15 @@ def write_tables(rows, out):
     (out / "backward_celerity.md").write_text("\n".join(lines) + "\n")
 
 
-def plot(rows, out, reference, results):
-    fig, axes = _style.plt.subplots(1, len(NU_VALUES), figsize=(7.0, 3.2))
-    for ax, nu in zip(axes, NU_VALUES):
+def plot(data, out):
+    fig, axes = _style.plt.subplots(1, len(data), figsize=(7.0, 3.2))
+    for ax, (nu, (paper, ours)) in zip(axes, data.items()):
         c_s, _, c_l = theory.wave_speeds(nu)
         ax.plot(F_CURVE, [theory_celerity(nu, f) for f in F_CURVE], color="k", lw=1.2,
                 label="steady wave (Adams 2000)")
         ax.axhline(-c_l, **dict(_style.THEORY_STYLE["c_l"], label="$-c_l$"))
-        paper = published(reference, nu)
         ax.plot(list(paper), list(paper.values()), ls="none", marker="*", ms=9, color="k",
                 label="published (Table 1)")
-        ours = measured(results, nu)
         for column, label, _, _, style in SERIES:
             points = sorted((f, c) for f, c in ours[column].items() if math.isfinite(c) and c < 0.0)
             if points:
@@ -166,18 +168,19 @@ def plot(rows, out, reference, results):
             handles.append(handle)
             labels.append(label)
     fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3, frameon=False)
-    fig.suptitle("Backward supersonic pulses: $E$ = 1000 Pa, $\\rho$ = 1000 kg/m$^3$, $\\lambda = 2H$", y=1.03)
+    fig.suptitle("Backward supersonic pulses: $E$ = 1000 Pa, $\\rho$ = 1000 kg/m$^3$, $\\lambda = 2H$",
+                 y=1.03)
     _style.save(fig, str(out / "backward_celerity"))
 
 
 def main(argv=None):
     # 1. Parse options; 2. collect theory, published and measured celerities; 3. write table, plot.
     args = parse_args(argv)
+    data = collect(args.results, args.reference)  # every input is read before anything is written
     out = Path(args.out)
     os.makedirs(out, exist_ok=True)
-    rows = table_rows(args.results, args.reference)
-    write_tables(rows, out)
-    plot(rows, out, args.reference, args.results)
+    write_tables(table_rows(data), out)
+    plot(data, out)
     return 0
 
 
