@@ -30,7 +30,8 @@ cancellation). Sliding of the body in ``-x`` (friction on it in ``+x``) means
 
 Results (proofs in docs/supersonic-backward.md)
 -----------------------------------------------
-* Where ``R > 0`` it increases strictly with ``s``; ``R(a) = 0`` for ``nu > 0``. Hence (2) has
+* Where the denominator of (1) is positive, R increases strictly with ``s``; ``R(a) = 0`` for
+  ``nu > 0``. Hence (2) has
   exactly one root for every ``f > 0`` and ``0 < nu < 1/2``, with ``c -> c_l`` as ``f -> 0``
   (``alpha = f nu / (1 - nu) + O(f^2)``) and, as ``f -> inf``, ``c ~ f (c_l - 2 c_s)`` for
   ``nu > 1/3``, ``c ~ f^(1/3) c_s`` at ``nu = 1/3``, ``c -> s_* c_s`` for ``nu < 1/3`` with
@@ -42,8 +43,8 @@ Results (proofs in docs/supersonic-backward.md)
 * Changing ``alpha, beta`` to ``-alpha, -beta`` (waves coming in from the body) changes the sign of
   R: the forward partner of a backward root at the same speed is the incoming field, excluded by the
   radiation condition. Inside a backward pulse on a stuck interface at the friction limit the slip
-  rate has one sign and the contact pressure drops (the energy radiated into the body,
-  ``-sigma_xy v_x = f |d sigma_yy| |v_x|`` on ``y = 0``, is positive only then).
+  rate has the sign of the sliding and the contact pressure drops: the energy flux into the body on
+  ``y = 0``, ``-sigma_xy v_x = f d(sigma_yy) v_x`` for sliding in ``+x``, is positive exactly then.
 
 Speeds are returned in the units of ``c_s`` (``c_s = 1``: normalised; pass
 ``analysis.theory.wave_speeds(nu)[0]`` for m/s at the paper's E and rho).
