@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "io/run_file.hpp"
+#include "io/xdmf.hpp"
 
 namespace slidewave {
 namespace {
@@ -43,11 +43,12 @@ void check_output_path(const std::string& h5_path, const std::vector<std::string
   const std::string head = "output " + h5_path + ": ";
   if (h5_path.empty() || h5_path.back() == '/') throw OutputPathError(head + "not a file name");
   if (ends_with_ignoring_case(h5_path, ".xdmf"))
-    throw OutputPathError(head + "names an XDMF file: the XDMF sidecar of the run (written next to the HDF5 "
-                          "file, X.h5 -> X.xdmf) would replace it; give the HDF5 name, e.g. -o run.h5");
+    throw OutputPathError(head + "names an XDMF file: the XDMF sidecars of the run (written next to the HDF5 "
+                          "file, X.h5 -> X.xdmf, X.interface.xdmf) would replace it; give the HDF5 name, e.g. -o run.h5");
 
   const std::string partial = partial_path_for(h5_path);
-  for (const auto& written : {h5_path, xdmf_path_for(h5_path), partial, xdmf_path_for(partial)})
+  for (const auto& written : {h5_path, xdmf_path_for(h5_path), interface_xdmf_path_for(h5_path), partial,
+                              xdmf_path_for(partial), interface_xdmf_path_for(partial)})
     for (const auto& input : inputs)
       if (same_file(written, input))
         throw OutputPathError(head + "the run would write " + written + ", which is the input file " + input);

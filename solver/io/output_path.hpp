@@ -19,9 +19,9 @@ class OutputPathError : public std::runtime_error {
 std::string partial_path_for(const std::string& h5_path);
 
 /// Throws OutputPathError when
-///  - `h5_path` names an XDMF file (ends in .xdmf: the sidecar of X.h5 is X.xdmf and would replace it)
-///    or a folder;
-///  - it, its sidecar or their .partial variants are one of `inputs` (same file, by device and inode);
+///  - `h5_path` names an XDMF file (ends in .xdmf: the sidecars of X.h5 are X.xdmf and X.interface.xdmf
+///    and would replace it) or a folder;
+///  - it, its sidecars or their .partial variants are one of `inputs` (same file, by device and inode);
 ///  - its folder does not exist, is not a folder, or no file can be created in it (the operating
 ///    system's reason, tried with a probe file that is removed at once: as root, permission bits say
 ///    nothing, a read-only or special filesystem does).

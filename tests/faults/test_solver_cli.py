@@ -145,16 +145,17 @@ def test_output_onto_the_config_exits_2_and_keeps_the_config(solver, tmp_path):
     assert files_in(tmp_path) == {"config.json"}
 
 
-def test_output_whose_sidecar_is_the_config_exits_2(solver, tmp_path):
-    config = write_config(tmp_path, TINY, name="run.xdmf")
+@pytest.mark.parametrize("config_name", ["run.xdmf", "run.interface.xdmf", "run.partial.h5"])
+def test_output_whose_sidecar_or_partial_file_is_the_config_exits_2(solver, tmp_path, config_name):
+    config = write_config(tmp_path, TINY, name=config_name)
     before = config.read_bytes()
     result = run(solver, "run", config, "-o", tmp_path / "run.h5")
     assert result.returncode == 2
     assert "input file" in result.stderr, result.stderr
-    assert config.read_bytes() == before and files_in(tmp_path) == {"run.xdmf"}
+    assert config.read_bytes() == before and files_in(tmp_path) == {config_name}
 
 
-@pytest.mark.parametrize("name", ["run.xdmf", "RUN.XDMF"])
+@pytest.mark.parametrize("name", ["run.xdmf", "RUN.XDMF", "run.interface.xdmf"])
 def test_output_named_like_the_xdmf_sidecar_exits_2(solver, tmp_path, name):
     config = write_config(tmp_path, {**TINY, "output": {"progress": "never", "snapshot_times": [0.0]}})
     result = run(solver, "run", config, "-o", tmp_path / name)
@@ -268,4 +269,5 @@ def test_interrupted_run_exits_3_and_leaves_the_complete_file_alone(solver, tmp_
     assert output.read_bytes() == complete_bytes, "the complete RUN.h5 was touched"
     attributes = root_attributes(tmp_path / "run.partial.h5")
     assert int(attributes["complete"]) == 0 and attributes["end_reason"] == "interrupted"
-    assert files_in(tmp_path) == {"tiny.json", "config.json", "run.h5", "run.partial.h5"}
+    assert files_in(tmp_path) == {"tiny.json", "config.json", "run.h5", "run.interface.xdmf", "run.partial.h5",
+                                  "run.partial.interface.xdmf"}
