@@ -1,21 +1,28 @@
 // slidewave: one run of the periodic elastic layer sliding on a rigid flat under Coulomb friction
-// (Yastrebov 2016). Sample runs (CI executes the first two):
-//   slidewave check study/examples/paper_nu0.2_f1.5.json
-//   slidewave run study/examples/paper_nu0.2_f1.5.json -o run.h5
+// (Yastrebov 2016). Sample runs:
+//   slidewave check study/examples/paper_nu0.2_f1.5_H32.json     (validate, print the resolved config)
+//   slidewave run study/examples/paper_nu0.2_f1.5_H32.json -o run.h5
+//   slidewave keys [--json]                                      (the key table, docs/contracts.md section 1)
 //   slidewave --version
-// Exit codes: 0 success, 1 run failed (output flushed and marked incomplete), 2 invalid input (or a
-// checkpoint of another run with --resume), 3 interrupted (RUN.partial.h5 and RUN.checkpoint.h5 kept),
-// 4 I/O error (the message names the file and the reason).
+// Exit codes of `run` (docs/contracts.md):
+//   0 complete (end_reason t_end or stop_after_opening): RUN.h5 written, complete = 1;
+//   1 contact failure (contact_not_converged): RUN.h5 written with complete = 0;
+//   2 bad input (config key or value, CLI usage, step count over time.max_steps, unusable output
+//     path): nothing written;
+//   3 interrupted (SIGINT/SIGTERM): RUN.h5 neither created nor touched, what was computed is in
+//     RUN.partial.h5 (complete = 0, end_reason interrupted), RUN.checkpoint.h5 continues it (--resume);
+//   2 also: --resume with a checkpoint of another configuration or build (nothing changed);
+//   4 I/O or internal error (unwritable file, HDF5 failure, ...): the message names the cause.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
+#include "config/config_keys.hpp"
 #include "config/run_config.hpp"
 #include "git_version.hpp"
+#include "io/output_path.hpp"
 #include "io/progress.hpp"
 #include "io/hdf5_support.hpp"
 #include "io/run_session.hpp"
@@ -30,15 +37,10 @@ extern "C" void omp_set_num_threads(int) __attribute__((weak));
 
 namespace {
 
+enum ExitCode { kComplete = 0, kContactFailure = 1, kBadInput = 2, kInterrupted = 3, kInternalError = 4 };
+
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 }  // namespace
 
@@ -46,7 +48,7 @@ int main(int argc, char** argv) {
   using namespace slidewave;
   h5::skip_library_cleanup_at_exit();  // before any HDF5 call: see io/hdf5_support.hpp
 
-  // 1. Parse options.
+  // 1. Parse options (a usage error is bad input: exit 2; --help and --version exit 0).
   CLI::App app{"slidewave: elastodynamic sliding of a periodic layer on a rigid flat under Coulomb friction"};
   app.set_version_flag("--version", std::string("slidewave ") + kVersion + " (git " + kGitCommit + ")");
   app.require_subcommand(1);
@@ -54,41 +56,68 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "compute one run and write RUN.h5");
   run->add_option("config", config_path, "run configuration (JSON)")->required();
   run->add_option("-o,--output", output_path, "output HDF5 file")->required();
-  int threads = 1;
-  run->add_option("--threads", threads, "threads of the BLAS/OpenMP under CHOLMOD")->check(CLI::Range(1, 256));
+  int threads = 0;
+  run->add_option("--threads", threads, "overrides numerics.threads (BLAS/OpenMP threads under CHOLMOD)");
   bool resume = false;
   run->add_flag("--resume", resume,
                 "continue from RUN.checkpoint.h5 when it was written for this configuration and build "
                 "(without one: start from the beginning)");
   auto* check = app.add_subcommand("check", "validate a configuration and print it resolved");
   check->add_option("config", config_path, "run configuration (JSON)")->required();
-  CLI11_PARSE(app, argc, argv);
-
-  // 2. Read and validate the configuration (every problem at once, exit 2, nothing written).
-  RunConfig config;
+  auto* keys = app.add_subcommand("keys", "print the configuration keys (default: Markdown, docs/contracts.md)");
+  bool keys_json = false, keys_markdown = false;
+  auto* json_flag = keys->add_flag("--json", keys_json, "as JSON, one object per key");
+  keys->add_flag("--markdown", keys_markdown, "as the Markdown section of docs/contracts.md")->excludes(json_flag);
   try {
-    config = load_run_config(config_path);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kComplete : kBadInput;
+  }
+  if (keys->parsed()) {
+    std::cout << (keys_json ? config_keys_json().dump(2) + "\n" : config_keys_markdown());
+    return kComplete;
+  }
+
+  // 2. Read the configuration bytes once and validate exactly those (every problem at once, exit 2,
+  //    nothing written); the same bytes are recorded as /setup/config_input.
+  RunConfig config;
+  std::string config_input;
+  try {
+    config_input = read_config_bytes(config_path);
+    nlohmann::json overrides = nlohmann::json::object();
+    if (run->count("--threads")) overrides["numerics"]["threads"] = threads;
+    config = parse_run_config_text(config_input, config_path, overrides);
   } catch (const ConfigError& e) {
     std::cerr << "slidewave: " << config_path << ": " << e.what();
-    return 2;
+    return kBadInput;
   }
   if (check->parsed()) {
     std::cout << config.to_json().dump(2) << "\n";
-    return 0;
+    return kComplete;
   }
 
-  // 3. Build the model and run the three stages.
-  if (openblas_set_num_threads) openblas_set_num_threads(threads);
-  if (omp_set_num_threads) omp_set_num_threads(threads);
+  // 3. Check the output before any work: a run must not end in "cannot write", nor overwrite its input.
+  try {
+    check_output_path(output_path, {config_path});
+  } catch (const OutputPathError& e) {
+    std::cerr << "slidewave: " << e.what() << "\n";
+    return kBadInput;
+  }
+
+  // 4. Build the model and run the three stages. Progress on a closed pipe must fail as EPIPE (and be
+  //    silenced), not kill the run with SIGPIPE.
+  if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
+  if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  std::signal(SIGPIPE, SIG_IGN);
   std::string call;
   for (int i = 0; i < argc; ++i) call += (i ? " " : "") + std::string(argv[i]);
   std::unique_ptr<RunSession> session;
   try {
-    // The output is streamed to RUN.partial.h5 and put in place at the end (io/run_session.hpp).
-    session = std::make_unique<RunSession>(output_path, config, Provenance{call, read_file(config_path)}, resume,
-                                           std::cerr);
+    // The output is streamed to RUN.partial.h5 and put in place at the end (io/run_session.hpp);
+    // with --resume a checkpoint of this configuration and build is continued.
+    session = std::make_unique<RunSession>(output_path, config, Provenance{call, config_input}, resume, std::cerr);
     const LayerModel model(config);
     const ProgressPrinter printer(config.output.progress, model.mesh.n_contact());
     const auto progress = [&](double t, double t_end, double rate, double tn, int n_slip) {
@@ -97,31 +126,24 @@ int main(int argc, char** argv) {
     const RunRecord record = simulate(model, progress, &g_stop, nullptr, session.get());
     printer.finish();
 
-    // 4. Say how the run ended.
-    if (record.end_reason == "interrupted") {
-      std::cerr << "slidewave: run interrupted at step " << record.n_steps_done << ", t = "
-                << record.n_steps_done * model.d.dt << " s; " << output_path << " not written; "
-                << session->partial_path() << " holds what was computed (complete = 0) and "
-                << session->checkpoint_path() << " continues it with --resume\n";
-      return 3;
-    }
-    if (!record.complete) {
-      std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
-                << ", t = " << record.n_steps_done * model.d.dt << " s; " << output_path
-                << " holds what was computed and is marked complete = 0\n";
-      return 1;
-    }
+    // 5. Say where the outcome went.
+    if (record.complete) return kComplete;
+    const bool interrupted = record.end_reason == "interrupted";
+    std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
+              << ", t = " << record.n_steps_done * model.d.dt << " s; "
+              << (interrupted ? session->partial_path() : output_path)
+              << " holds what was computed and is marked complete = 0"
+              << (interrupted ? "; " + output_path + " was not touched; " + session->checkpoint_path() +
+                                    " continues the run with --resume"
+                              : std::string())
+              << "\n";
+    return interrupted ? kInterrupted : kContactFailure;
   } catch (const ResumeRefused& e) {
     std::cerr << "slidewave: " << e.what() << "\n";
-    return 2;
-  } catch (const IoError& e) {
-    const std::string kept = session ? session->abandon() : "";
-    std::cerr << "slidewave: error: " << e.what() << (kept.empty() ? "" : "; " + kept) << "\n";
-    return 4;
+    return kBadInput;
   } catch (const std::exception& e) {
     const std::string kept = session ? session->abandon() : "";
     std::cerr << "slidewave: error: " << e.what() << (kept.empty() ? "" : "; " + kept) << "\n";
-    return 1;
+    return kInternalError;
   }
-  return 0;
 }

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "io/hdf5_support.hpp"
-#include "io/run_file.hpp"
+#include "io/xdmf.hpp"
 
 namespace slidewave {
 
@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 bool exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 
 /// Removes what killed runs into the same output may have left: "<name>.tmp.<pid>" of the run file,
-/// the partial file and the checkpoint, and the staged sidecar "<RUN>.xdmf.tmp".
+/// the partial file and the checkpoint, and the staged sidecars "<RUN>.xdmf.tmp", "<RUN>.interface.xdmf.tmp".
 void remove_stale_temporaries(const std::vector<std::string>& names) {
   for (const auto& name : names) {
     const fs::path path(name);
@@ -62,7 +62,8 @@ RunSession::RunSession(std::string final_path, const RunConfig& config, const Pr
         text += "(run without --resume to start over, which removes it)";
         throw ResumeRefused(text);
       }
-      remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_)});
+      remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_),
+                            interface_xdmf_path_for(final_path_)});
       // The rows are copied into a new file that replaces the partial file only once they are verified:
       // a kill meanwhile leaves the partial file and the checkpoint as they were.
       writer_ = std::make_unique<RunWriter>(partial_path_ + ".tmp." + std::to_string(::getpid()), config, provenance);
@@ -87,7 +88,8 @@ RunSession::RunSession(std::string final_path, const RunConfig& config, const Pr
 RunSession::~RunSession() = default;
 
 void RunSession::start_over(const Provenance& provenance) {
-  remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_)});
+  remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_),
+                            interface_xdmf_path_for(final_path_)});
   if (exists(checkpoint_path_) && std::remove(checkpoint_path_.c_str()) != 0)
     throw IoError("cannot remove the stale " + checkpoint_path_ + ": " + std::strerror(errno));
   writer_ = std::make_unique<RunWriter>(partial_path_, config_, provenance);
@@ -117,12 +119,16 @@ void RunSession::at_end(RunRecord& record, const Capture& capture) {
   if (record.end_reason == "interrupted") {
     write_checkpoint_now(record, capture);
     writer_->finish(record);
+    writer_->write_sidecars();  // so that ParaView shows what was computed
     return;
   }
   writer_->finish(record);
   writer_->put_in_place(final_path_);
-  // RUN.h5 is complete: what served to resume goes (a leftover would only be refused or restarted).
+  // RUN.h5 is in place: what served to resume goes (a leftover would only be refused or restarted),
+  // with the sidecars an earlier interruption wrote for the partial file.
   std::remove(checkpoint_path_.c_str());
+  std::remove(xdmf_path_for(partial_path_).c_str());
+  std::remove(interface_xdmf_path_for(partial_path_).c_str());
 }
 
 std::string RunSession::abandon() noexcept {

@@ -8,17 +8,11 @@
 #include <cstring>
 
 #include "io/hdf5_support.hpp"
-#include "io/run_file.hpp"
+#include "io/xdmf.hpp"
 
 namespace slidewave {
 
 using h5::Handle;
-
-std::string partial_path_for(const std::string& h5_path) {
-  const std::string ext = ".h5";
-  const bool has_ext = h5_path.size() > ext.size() && h5_path.compare(h5_path.size() - ext.size(), ext.size(), ext) == 0;
-  return (has_ext ? h5_path.substr(0, h5_path.size() - ext.size()) : h5_path) + ".partial.h5";
-}
 
 namespace {
 
@@ -226,7 +220,7 @@ void RunWriter::ensure_layout(const RunRecord& record) {
   if (files_->interface.valid()) return;
   const hid_t file = files_->file;
   n_contact_ = record.interface.slip.n_cols;
-  interface_x_ = record.interface.x;
+  outline_.interface.x = record.interface.x;
   // A chunk of interface rows per drain of the record (and at least one row).
   interface_block_rows_ = std::max<std::size_t>(1, chunk_rows(sizeof(double), n_contact_));
   files_->interface = h5::group_create(file, "interface", path_);
@@ -251,7 +245,7 @@ void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mes
                 {"m", "node coordinates of the unwrapped mesh (the column x = lambda repeats x = 0)"}, true, path_);
     write_fixed(files_->snapshots, "connectivity", mesh.connectivity, mesh.connectivity.size() / 4, 4,
                 {"1", "quadrilateral nodes, counter-clockwise"}, true, path_);
-    snapshot_mesh_ = mesh;
+    outline_.snapshot_mesh = mesh;
   }
   const std::string id = snapshot_id(static_cast<std::size_t>(position_.n_snapshots));
   const Handle one = h5::group_create(files_->snapshots, id, path_);
@@ -263,7 +257,7 @@ void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mes
   position_.digests[base + "displacement"] =
       digest_update(kFnvOffset, snapshot.displacement.data(), snapshot.displacement.size());
   position_.digests[base + "velocity"] = digest_update(kFnvOffset, snapshot.velocity.data(), snapshot.velocity.size());
-  snapshot_times_.push_back(snapshot.t);
+  outline_.snapshots.push_back(Snapshot{snapshot.t, {}, {}});
   ++position_.n_snapshots;
 }
 
@@ -316,6 +310,7 @@ void RunWriter::flush_to_disk(RunRecord& record) {
 void RunWriter::finish(RunRecord& record) {
   drain(record);
   write_run_outcome(files_->file, path_, record);
+  if (files_->interface.valid()) outline_.interface.t = read_all<double>(files_->interface, "t", path_);
   series_.clear();
   // Closing flushes what HDF5 still holds: a full disk shows here at the latest.
   errno = 0;
@@ -323,25 +318,31 @@ void RunWriter::finish(RunRecord& record) {
 }
 
 void RunWriter::put_in_place(const std::string& final_path) {
-  // The sidecar is staged before the rename and renamed after it, so it never points at a missing file.
-  const std::string xdmf = xdmf_path_for(final_path), xdmf_staged = xdmf + ".tmp";
-  const bool with_snapshots = !snapshot_times_.empty();
-  if (with_snapshots) {
-    RunRecord outline;
-    outline.snapshot_mesh = snapshot_mesh_;
-    for (double t : snapshot_times_) outline.snapshots.push_back(Snapshot{t, {}, {}});
-    write_bulk_xdmf(xdmf_staged, base_name(final_path), outline);
+  try {
+    stage_xdmf_sidecars(final_path, outline_);
+  } catch (const std::exception& e) {
+    throw IoError(e.what());
   }
   if (std::rename(path_.c_str(), final_path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
-    if (with_snapshots) std::remove(xdmf_staged.c_str());
+    discard_xdmf_sidecars(final_path);
     throw IoError("cannot rename " + path_ + " to " + final_path + ": " + reason);
   }
   path_ = final_path;
-  if (with_snapshots && std::rename(xdmf_staged.c_str(), xdmf.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(xdmf_staged.c_str());
-    throw IoError("cannot rename " + xdmf_staged + " to " + xdmf + ": " + reason);
+  try {
+    publish_xdmf_sidecars(final_path, outline_);
+  } catch (const std::exception& e) {
+    throw IoError(e.what());
+  }
+}
+
+void RunWriter::write_sidecars() {
+  try {
+    stage_xdmf_sidecars(path_, outline_);
+    publish_xdmf_sidecars(path_, outline_);
+  } catch (const std::exception& e) {
+    discard_xdmf_sidecars(path_);
+    throw IoError(e.what());
   }
 }
 

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "config/run_config.hpp"
+#include "io/output_path.hpp"  // partial_path_for
 #include "io/run_attributes.hpp"
 #include "model/run_record.hpp"
 
@@ -35,9 +36,6 @@ struct StreamPosition {
            n_snapshots == o.n_snapshots && digests == o.digests;
   }
 };
-
-/// RUN.h5 -> RUN.partial.h5 (the extension .h5 is replaced if present, else appended to).
-std::string partial_path_for(const std::string& h5_path);
 
 /// The partial file no longer holds the rows a checkpoint counted (killed mid-write, edited, replaced).
 class StreamMismatch : public std::runtime_error {
@@ -69,8 +67,11 @@ class RunWriter {
   /// drain(), the outcome attributes, close. Throws IoError (the file stays; see discard()).
   void finish(RunRecord& record);
 
-  /// Renames the closed working file to `final_path` (atomic) and writes the XDMF sidecars beside it.
+  /// Renames the closed working file to `final_path` (atomic); the XDMF sidecars (io/xdmf.hpp) are
+  /// staged before and renamed after it, so that they never point at a missing file.
   void put_in_place(const std::string& final_path);
+  /// Writes the XDMF sidecars of the closed working file beside it (an interrupted run's partial file).
+  void write_sidecars();
   /// Renames the working file (open or not) to `new_path`, which it then writes.
   void move_to(const std::string& new_path);
   /// Closes (if open) and removes the working file: nothing of value is in it.
@@ -98,9 +99,7 @@ class RunWriter {
   std::map<std::string, std::unique_ptr<Series>> series_;  ///< by dataset path
   StreamPosition position_;
   std::size_t interface_block_rows_ = 256;
-  SnapshotMesh snapshot_mesh_;                             ///< kept for the XDMF sidecar
-  std::vector<double> snapshot_times_;                     ///< kept for the XDMF sidecar
-  std::vector<double> interface_x_;
+  RunRecord outline_;  ///< what the XDMF sidecars need: x, snapshot mesh and times, output times (at the end)
   int n_contact_ = 0;
 };
 

@@ -57,7 +57,7 @@ def test_a_run_that_fits_is_unaffected_by_the_limit(tmp_path):
     (tmp_path / "out").mkdir()
     result = run_limited(tmp_path, SMALL, 200000)
     assert result.returncode == 0, result.stderr
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["RUN.h5", "RUN.xdmf"]
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf"]
 
 
 def test_a_corrupted_dataset_is_reported_by_its_checksum(tmp_path):

@@ -83,7 +83,7 @@ def reference(tmp_path_factory):
     elapsed = time.monotonic() - start
     assert result.returncode == 0, result.stderr
     assert attributes(folder / "RUN.h5")["complete"] == 1
-    assert sorted(p.name for p in folder.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"]
+    assert sorted(p.name for p in folder.iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf", "run.json"]
     return folder / "RUN.h5", elapsed
 
 
@@ -123,7 +123,7 @@ def test_resume_after_a_signal_is_bit_identical(tmp_path, reference, fraction, s
         assert "resuming from step" in resumed.stderr, resumed.stderr
     assert attributes(tmp_path / "RUN.h5")["complete"] == 1
     assert_same_datasets(tmp_path / "RUN.h5", reference_file)
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"], \
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf", "run.json"], \
         "checkpoint, partial file and temporaries are gone once RUN.h5 is complete"
 
 
@@ -173,4 +173,4 @@ def test_partial_file_without_the_checkpointed_rows_starts_over(tmp_path, refere
     assert result.returncode == 0, result.stderr
     assert "cannot resume" in result.stderr and "/global/T" in result.stderr and "starting over" in result.stderr
     assert_same_datasets(tmp_path / "RUN.h5", reference_file)
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.xdmf", "run.json"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf", "run.json"]

@@ -13,6 +13,7 @@
 #include "hdf5_test_support.hpp"
 #include "io/hdf5_support.hpp"
 #include "io/run_file.hpp"
+#include "io/xdmf.hpp"
 #include "io/run_writer.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
@@ -83,7 +84,8 @@ TEST(RunWriter, DrainedInBlocksEqualsWholeFile) {
   RunRecord outcome = rows_of(rec, 0, 0, 0, 0, 0, 0);
   writer.finish(outcome);
   writer.put_in_place(dir / "streamed.h5");
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"streamed.h5", "streamed.xdmf", "whole.h5", "whole.xdmf"}));
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"streamed.h5", "streamed.interface.xdmf", "streamed.xdmf",
+                                                     "whole.h5", "whole.interface.xdmf", "whole.xdmf"}));
 
   const auto whole = testing::read_all_datasets(dir / "whole.h5");
   const auto streamed = testing::read_all_datasets(dir / "streamed.h5");
@@ -260,18 +262,12 @@ TEST(RunWriter, FilesTakeTheModeTheUmaskGives) {
     const mode_t old = ::umask(mask);
     write_run_file(dir / "run.h5", small_run().config, small_run().record, {"call", "{}"});
     ::umask(old);
-    for (const char* name : {"run.h5", "run.xdmf"}) {
+    for (const char* name : {"run.h5", "run.xdmf", "run.interface.xdmf"}) {
       struct stat info {};
       ASSERT_EQ(::stat((dir / name).c_str(), &info), 0) << name;
       EXPECT_EQ(info.st_mode & 0777, 0666 & ~mask) << name << " with umask " << std::oct << mask;
     }
   }
-}
-
-TEST(RunWriter, PartialPath) {
-  EXPECT_EQ(partial_path_for("out/run.h5"), "out/run.partial.h5");
-  EXPECT_EQ(partial_path_for("run"), "run.partial.h5");
-  EXPECT_EQ(partial_path_for("a.b/run.hdf5"), "a.b/run.hdf5.partial.h5");
 }
 
 }  // namespace
