@@ -6,7 +6,7 @@
 
 #include "contact/delassus.hpp"
 #include "contact/gauss_seidel.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 
@@ -98,18 +98,16 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   // 1. Effective matrix, factorized once, and its condensation on the contact DOFs.
   const HHTCoefficients hht(c.time.hht_alpha, d.dt);
-  const double a = hht.alpha, dt = hht.dt;
-  const bool alpha_weighted = c.time.contact_weighting == ContactWeighting::alpha;
-  const double w = alpha_weighted ? 1 - a : 1.0;        // weight of r(n+1)
-  const double w_previous = alpha_weighted ? a : 0.0;   // weight of r(n)
-  const Eigen::SparseMatrix<double> K_eff_matrix = hht.mass_factor() * m.M_ff + (1 - a) * m.K_ff;
-  const auto K_eff = m.factorize(K_eff_matrix);
-  const Eigen::MatrixXd W = w * delassus_operator_periodic(*K_eff, n_nodes_c);
+  const double dt = hht.dt;
+  const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, n_f, n_t, n_c};
+  HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
+                     m.factorize(effective_matrix(hht, system)));
+  const Eigen::MatrixXd W = stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_nodes_c);
 
   // 2. Initial state: the preload, plus the seeded perturbation that breaks translation invariance.
   //    The normal DOFs of the contact nodes are not perturbed (no initial gap or penetration).
-  Eigen::VectorXd u = pre.u, v = Eigen::VectorXd::Zero(n_f + n_t), acc = Eigen::VectorXd::Zero(n_f + n_t);
-  for (int i = 0; i < m.mesh.n_x; ++i) v(n_f + 2 * i) = d.V0;  // the top moves at V0 from t = 0
+  Eigen::VectorXd u0 = pre.u, v0 = Eigen::VectorXd::Zero(n_f + n_t);
+  for (int i = 0; i < m.mesh.n_x; ++i) v0(n_f + 2 * i) = d.V0;  // the top moves at V0 from t = 0
   {
     std::mt19937_64 generator(static_cast<std::uint64_t>(c.perturbation.seed));
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -117,16 +115,11 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     for (int dof = 0; dof < n_f; ++dof) {
       const double xi = uniform(generator);
       if (dof < n_c && dof % 2 == 1) continue;
-      u(dof) += amplitude * xi;
+      u0(dof) += amplitude * xi;
     }
   }
-  Eigen::VectorXd r = pre.r;
-  Eigen::VectorXd Ku = m.K * u;
-  {  // consistent initial acceleration: M_ff a_f = C^T r - (K u)_f
-    Eigen::VectorXd rhs = -Ku.head(n_f);
-    rhs.head(n_c) += r;
-    acc.head(n_f) = m.factorize(m.M_ff)->solve(rhs);
-  }
+  HHTState s = stepper.initial_state(u0, v0, pre.r, *m.factorize(m.M_ff));
+  Eigen::VectorXd &u = s.u, &v = s.v, &acc = s.acc, &r = s.r, &Ku = s.Ku, &Mv_f = s.Mv_f;
   const Eigen::VectorXd u_contact_start = u.head(n_c);
   const double u_y_top = c.loading.Uy_over_H * d.H;
   std::vector<ContactState> state = pre.state;
@@ -138,12 +131,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     bounds.resize(n_nodes_c);
   }
 
-  // 3. Mass products of the free rows, M_ff u, M_ff v, M_ff a, carried through the step by the Newmark
-  //    relations and the equation of motion (M_ff a(n+1) follows from K u, K u(n) and the contact forces),
-  //    so that K u is the only full sparse product of a step. The top velocity is the constant V0.
-  Eigen::VectorXd Mu_f = m.M_ff_rows * u.head(n_f), Mv_f = m.M_ff_rows * v.head(n_f);
-  Eigen::VectorXd Ma_f = -Ku.head(n_f);
-  Ma_f.head(n_c) += r;
+  // 3. Kinetic energy from the carried M_ff v (the top velocity is the constant V0).
   const Eigen::VectorXd M_fd_v_top = m.M_fd * v.tail(n_t);
   const double kinetic_top = v.tail(n_t).dot(m.M.bottomRightCorner(n_t, n_t) * v.tail(n_t));
   const auto kinetic = [&]() { return 0.5 * (v.head(n_f).dot(Mv_f + 2 * M_fd_v_top) + kinetic_top); };
@@ -203,8 +191,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   rec.complete = true;
   auto wall_last = std::chrono::steady_clock::now();
   int steps_since_report = 0;
-  Eigen::VectorXd u_tilde(n_f), Mu_tilde(n_f), rhs(n_f), u_free(n_f), q(n_c), y(n_c), r_new(n_c), Ku_next(n_f + n_t),
-      Ma_next(n_f);
+  Eigen::VectorXd q(n_c), y(n_c), r_new(n_c);
   for (int step = 1; step <= n_steps_max; ++step) {
     const double t = step * dt;
     // The run ends with the first step that reaches t_end (t_end may have been shortened by
@@ -218,14 +205,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     const Eigen::VectorXd u_d = m.top_displacement(pre.u_x_top + d.V0 * t, u_y_top);
 
     // Predictor and free solve.
-    u_tilde = u.head(n_f) + dt * v.head(n_f) + dt * dt * (0.5 - hht.beta) * acc.head(n_f);
-    Mu_tilde = Mu_f + dt * Mv_f + dt * dt * (0.5 - hht.beta) * Ma_f;
-    rhs.noalias() = hht.mass_factor() * Mu_tilde;
-    rhs.noalias() -= (1 - a) * (m.K_fd * u_d);
-    rhs.noalias() -= a * Ku.head(n_f);
-    if (w_previous != 0) rhs.head(n_c) += w_previous * r;
+    stepper.predict(s, u_d);
     watch.lap(&StepProfile::predictor);
-    K_eff->solve_into(rhs, u_free);
+    const Eigen::VectorXd& u_free = stepper.solve_free();
     watch.lap(&StepProfile::free_solve);
 
     // Contact: y = (du_x, u_y) at the contact nodes.
@@ -245,40 +227,26 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     if (profile) profile->contact_sweeps += report.iterations;
 
     // Correction, Newmark update, diagnostics.
-    rhs.head(n_c) += w * r_new;
-    Eigen::VectorXd u_next(n_f + n_t);
-    K_eff->solve_into(rhs, u_next.head(n_f));
-    u_next.tail(n_t) = u_d;
-    const Eigen::VectorXd acc_f_next = hht.mass_factor() * (u_next.head(n_f) - u_tilde);
-    v.head(n_f) += dt * ((1 - hht.gamma) * acc.head(n_f) + hht.gamma * acc_f_next);
-    acc.head(n_f) = acc_f_next;
-
+    const Eigen::VectorXd u_top_prev = u.tail(n_t);
+    stepper.correct(r_new, s);
     watch.lap(&StepProfile::correction);
-    const Eigen::VectorXd du_contact = u_next.head(n_c) - u.head(n_c);
+    const Eigen::VectorXd& u_prev = stepper.u_previous();
+    const Eigen::VectorXd& r_prev = stepper.r_previous();
+    const Eigen::VectorXd du_contact = u.head(n_c) - u_prev.head(n_c);
     // Work of the contact forces over the step, booked with the trapezoid: the discrete energy identity
     // of the trapezoidal rule (exact at hht_alpha = 0, either weighting). For hht_alpha > 0 no exact
     // identity exists; with "end" weighting the booked residual can then be slightly positive (2e-6 of
     // the energy scale measured at H/8), with "alpha" weighting it stays negative (HHT dissipation).
     for (int k = 0; k < n_nodes_c; ++k) {
-      dissipation -= 0.5 * (r(2 * k) + r_new(2 * k)) * du_contact(2 * k);
-      work_normal -= 0.5 * (r(2 * k + 1) + r_new(2 * k + 1)) * du_contact(2 * k + 1);
+      dissipation -= 0.5 * (r_prev(2 * k) + r(2 * k)) * du_contact(2 * k);
+      work_normal -= 0.5 * (r_prev(2 * k + 1) + r(2 * k + 1)) * du_contact(2 * k + 1);
     }
     if (!bounds.empty())
       for (int k = 0; k < n_nodes_c; ++k) {
         const double theta = (std::fabs(du_contact(2 * k)) + c.friction.pc_velocity * dt) / c.friction.pc_length;
-        regularized_normal[k] = (regularized_normal[k] + theta * r_new(2 * k + 1)) / (1 + theta);
+        regularized_normal[k] = (regularized_normal[k] + theta * r(2 * k + 1)) / (1 + theta);
       }
-    const Eigen::VectorXd u_contact_prev = u.head(n_c);
-    const Eigen::VectorXd u_top_prev = u.tail(n_t);
-    Ku_next.noalias() = m.K * u_next;
-    Ma_next = -(1 - a) * Ku_next.head(n_f) - a * Ku.head(n_f);
-    Ma_next.head(n_c) += w * r_new + w_previous * r;
-    Mv_f += dt * ((1 - hht.gamma) * Ma_f + hht.gamma * Ma_next);
-    Mu_f = Mu_tilde + hht.beta * dt * dt * Ma_next;
-    Ma_f = Ma_next;
-    u = u_next;
-    r = r_new;
-    Ku.swap(Ku_next);
+    const Eigen::VectorXd u_contact_prev = u_prev.head(n_c);
     const Eigen::VectorXd F_top_next = Ku.tail(n_t) + m.M_top_rows * acc;
     work_external += 0.5 * (F_top + F_top_next).dot(u_d - u_top_prev);
     F_top = F_top_next;
