@@ -17,7 +17,8 @@
 namespace slidewave {
 namespace {
 
-/// Adds the time since the last call to one field of the profile (no-op without a profile).
+/// Adds the time since the last call to one field of the profile, and counts steps and sweeps (no-op
+/// without a profile).
 class Stopwatch {
  public:
   explicit Stopwatch(StepProfile* p) : profile_(p), last_(std::chrono::steady_clock::now()) {}
@@ -26,6 +27,11 @@ class Stopwatch {
     const auto now = std::chrono::steady_clock::now();
     profile_->*field += std::chrono::duration<double>(now - last_).count();
     last_ = now;
+  }
+  void count(std::int64_t step, int contact_sweeps) {
+    if (!profile_) return;
+    profile_->steps = step;
+    profile_->contact_sweeps += contact_sweeps;
   }
 
  private:
@@ -87,6 +93,14 @@ LoopState initial_state(const LayerModel& m, const PreloadState& pre, const HHTS
   loop.contact = pre.state;
   loop.friction = friction.initial_state(pre.r);
   return loop;
+}
+
+/// time.stop_after_opening: once the interface has opened at t, the run ends that long after.
+void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
+  if (time.stop_after_opening && t + *time.stop_after_opening < loop.t_end) {
+    loop.t_end = t + *time.stop_after_opening;
+    loop.end_reason = "stop_after_opening";
+  }
 }
 
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
@@ -151,7 +165,6 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     const GaussSeidelReport report = contact.solve(W, u_free, c.friction.f, *friction, settings, loop);
     if (!report.converged) { failure = "contact_not_converged"; break; }
     watch.lap(&StepProfile::contact);
-    if (profile) profile->contact_sweeps += report.iterations;
     // 4c. Correction with r(n+1) and Newmark update.
     stepper.correct(contact.r_next, s);
     watch.lap(&StepProfile::correction);
@@ -161,13 +174,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     ledger.book_step(s, stepper.u_previous(), stepper.r_previous(), contact.du, loop.energy);
     friction->update(contact.du, s.r, hht.dt, loop.friction);
     recorder.record_step(loop, stepper.u_previous(), report);
-    if (recorder.detect_first_opening(loop) && c.time.stop_after_opening &&
-        t + *c.time.stop_after_opening < loop.t_end) {
-      loop.t_end = t + *c.time.stop_after_opening;
-      loop.end_reason = "stop_after_opening";
-    }
+    if (recorder.detect_first_opening(loop)) shorten_after_opening(c.time, t, loop);
     watch.lap(&StepProfile::diagnostics);
-    if (profile) profile->steps = loop.step;
+    watch.count(loop.step, report.iterations);
     pacer.step_done(t, loop, recorder);
   }
   return recorder.finish(loop, failure.empty(), failure.empty() ? loop.end_reason : failure);

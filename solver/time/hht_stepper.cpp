@@ -74,7 +74,7 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
   Ma_next_.head(n_c) += w_ * r_next + w_previous_ * s.r;
   s.Mv_f += dt * ((1 - hht_.gamma) * s.Ma_f + hht_.gamma * Ma_next_);
   s.Mu_f = Mu_tilde_ + hht_.beta * dt * dt * Ma_next_;
-  s.Ma_f = Ma_next_;
+  s.Ma_f.swap(Ma_next_);  // Ma_next_ is rewritten whole by the next step
   s.u.swap(u_work_);  // u_work_ keeps u(n): u_previous()
   r_previous_.swap(s.r);
   s.r = r_next;
