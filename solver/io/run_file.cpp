@@ -121,25 +121,27 @@ void write_run_file(const std::string& path, const RunConfig& config, const RunR
     attribute_string(file, "end_reason", rec.end_reason);
     attribute_number(file, "n_steps_done", rec.n_steps_done);
     attribute_number(file, "t_first_opening", rec.t_first_opening);
-    attribute_number(file, "u_x_preshear", rec.u_x_preshear);
-    attribute_number(file, "E", config.material.E);
-    attribute_number(file, "nu", config.material.nu);
-    attribute_number(file, "rho", config.material.rho);
-    attribute_number(file, "H", d.H);
-    attribute_number(file, "lambda", d.lambda);
-    attribute_number(file, "h", d.h);
-    attribute_number(file, "f", config.friction.f);
-    attribute_number(file, "c_s", d.c_s);
-    attribute_number(file, "c_l", d.c_l);
-    attribute_number(file, "p0", d.p0);
-    attribute_number(file, "V0", d.V0);
-    attribute_number(file, "dt", d.dt);
-    attribute_number(file, "t_end", config.time.t_end);
-    attribute_number(file, "hht_alpha", config.time.hht_alpha);
-    attribute_number(file, "t_onset_estimate", d.t_onset_estimate);
 
-    const hid_t setup = H5Gcreate2(file, "setup", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    // Setup: the verbatim input and every derived constant the solver used.
+    const hid_t setup = check_id(H5Gcreate2(file, "setup", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "setup");
     attribute_string(setup, "config_input", provenance.config_input);
+    attribute_number(setup, "E", config.material.E);
+    attribute_number(setup, "nu", config.material.nu);
+    attribute_number(setup, "rho", config.material.rho);
+    attribute_number(setup, "H", d.H);
+    attribute_number(setup, "lambda", d.lambda);
+    attribute_number(setup, "h", d.h);
+    attribute_number(setup, "f", config.friction.f);
+    attribute_number(setup, "c_s", d.c_s);
+    attribute_number(setup, "c_l", d.c_l);
+    attribute_number(setup, "p0", d.p0);
+    attribute_number(setup, "V0", d.V0);
+    attribute_number(setup, "dt", d.dt);
+    attribute_number(setup, "t_end", config.time.t_end);
+    attribute_number(setup, "hht_alpha", config.time.hht_alpha);
+    attribute_number(setup, "t_onset_estimate", d.t_onset_estimate);
+    attribute_number(setup, "u_x_preshear", rec.u_x_preshear);
+    attribute_number(setup, "opening_threshold", rec.opening_threshold);
     H5Gclose(setup);
 
     const auto& s = rec.interface;

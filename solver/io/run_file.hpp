@@ -1,6 +1,7 @@
 #pragma once
-// Writes run.h5 (format_version 1, docs/contracts.md section 2) and its XDMF sidecars (io/xdmf.hpp)
-// that ParaView opens. Both are written to a temporary name and renamed, so a failed
+// Writes run.h5 (format_version 2, docs/contracts.md section 2: provenance and outcome at the root, the
+// verbatim input and the derived constants in /setup) and its XDMF sidecars (io/xdmf.hpp) that
+// ParaView opens. Both are written to a temporary name and renamed, so a failed
 // or killed run never leaves a file that looks complete (an incomplete run is written with
 // complete = 0 and its end_reason).
 #include <string>
@@ -10,7 +11,7 @@
 
 namespace slidewave {
 
-inline constexpr int kRunFormatVersion = 1;
+inline constexpr int kRunFormatVersion = 2;
 
 struct Provenance {
   std::string call;          ///< the command line
