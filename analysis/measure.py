@@ -26,7 +26,7 @@ from analysis.tracking import EdgeTrack, find_edges
 from analysis.xcorr import XcorrResult, celerity_by_xcorr
 
 #: Version of the measurement definitions, written into every metrics file.
-ANALYSIS_VERSION = "2"
+ANALYSIS_VERSION = "3"
 
 #: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
 QUALITY_AGREEMENT = 0.02
