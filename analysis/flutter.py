@@ -120,6 +120,7 @@ __all__ = [
     "secular_determinant",
     "growing_roots",
     "flutter_boundary",
+    "inside_wedge",
     "boundary_speeds",
 ]
 
@@ -333,6 +334,13 @@ def flutter_boundary(nu: float) -> tuple[float, float]:
     if nu >= NU_WEDGE_OPEN:
         return (THRESHOLD_F, math.inf)
     return (THRESHOLD_F, _upper_double_root(nu)[0])
+
+
+def inside_wedge(nu: float, f: float) -> bool:
+    """Whether (nu, f) lies strictly inside the flutter wedge, f_lower < f < f_upper (False at
+    nu = 0, where there is no instability)."""
+    lower, upper = flutter_boundary(nu)
+    return bool(math.isfinite(lower) and lower < f < upper)
 
 
 def boundary_speeds(nu: float) -> tuple[float, float]:

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from analysis import celerity as cel
-from analysis import dissipation, energy, inversion, opening, pulses, regime, theory, validity
+from analysis import dissipation, energy, flutter, inversion, opening, pulses, regime, theory, validity
 from analysis.errors import InputError
 from analysis.io import RunData
 from analysis.edges import slipping_mask
@@ -265,6 +265,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "onset_time": onset_time,
         "onset_time_estimate": run.attr("t_onset_estimate"),
         "celerity": c_p,
+        "celerity_over_cs": c_p / c_s,
         "celerity_reason": result.reason,
         "celerity_window": list(result.window) if result.window else None,
         "celerity_window_start": result.window[0] if result.window else math.nan,
@@ -313,6 +314,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "later_drops_start_T_over_N_median": (float(np.median(later_starts)) if later_starts
                                               else math.nan),
         "n_complete_drops": sum(d.complete for d in drops),
+        "first_drop_start_after_onset": (first.t_start - onset_time) if first else math.nan,
+        "first_drop_duration": (first.t_bottom - first.t_start) if first else math.nan,
+        "inside_flutter_wedge": flutter.inside_wedge(run.attr("nu"), f),
         "category": regime.category(slipped=front_map.n_slipping_frames > 0,
                                     has_front=front_map.n_edge_frames > 0, opened=opened.opened,
                                     celerity=c_p, c_s=c_s, c_l=c_l, inversion=inverted,

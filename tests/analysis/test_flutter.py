@@ -222,3 +222,12 @@ def test_invalid_poisson_ratio_rejected():
     for nu in (-0.1, 0.5, 0.7):
         with pytest.raises(ValueError):
             flutter.flutter_boundary(nu)
+
+
+def test_inside_wedge_is_strict_and_follows_the_boundary():
+    lower, upper = flutter.flutter_boundary(0.2)
+    assert flutter.inside_wedge(0.2, 1.5) and flutter.inside_wedge(0.2, 0.5 * (lower + upper))
+    assert not flutter.inside_wedge(0.2, lower) and not flutter.inside_wedge(0.2, upper)
+    assert not flutter.inside_wedge(0.2, 0.9) and not flutter.inside_wedge(0.2, upper + 0.1)
+    assert flutter.inside_wedge(0.4, 1e6)            # open wedge for nu >= 1/3
+    assert not flutter.inside_wedge(0.0, 1.5)        # no instability at nu = 0

@@ -247,3 +247,14 @@ def test_sampling_too_coarse_is_its_own_category(run_file, stride, coarse):
     assert m["output_frames_per_round_trip"] == pytest.approx(100.0 / stride)
     assert m["sampling_too_coarse"] is coarse
     assert (m["category"] == "sampling_too_coarse") is coarse
+
+
+def test_derived_metrics_figures_and_paper_need(run_file):
+    m = measure(run_file, paper_case())
+    assert m["celerity_over_cs"] == pytest.approx(m["celerity"] / m["c_s"], rel=1e-15)
+    assert m["first_drop_start_after_onset"] == pytest.approx(m["first_drop_start_time"] - m["onset_time"])
+    assert m["first_drop_duration"] == pytest.approx(m["first_drop_bottom_time"] - m["first_drop_start_time"])
+    # nu = 0.2: the wedge is 1 < f < 6.19 (analysis.flutter); nu = 0 has none.
+    assert m["inside_flutter_wedge"] is True
+    assert measure(run_file, paper_case(f=0.8))["inside_flutter_wedge"] is False
+    assert measure(run_file, paper_case(nu=0.0))["inside_flutter_wedge"] is False
