@@ -240,3 +240,26 @@ def paper_case(**changes) -> Scenario:
     base = Scenario(pulses=[Pulse(celerity=0.882, x_front=10.0, t_start=800.0, opening=0.01,
                                   opening_start=880.0)])
     return replace(base, **changes)
+
+
+def store_with_filters(path, name: str, **filters) -> None:
+    """Rewrite dataset `name` of a run file as one chunk with HDF5 filters (e.g. fletcher32=True)."""
+    import h5py
+
+    with h5py.File(path, "a") as file:
+        data = file[name][()]
+        del file[name]
+        file.create_dataset(name, data=data, chunks=data.shape, **filters)
+
+
+def corrupt_stored_chunk(path, name: str, at: int = 7) -> None:
+    """Flip one byte of the first stored chunk of a dataset, behind HDF5's back (a damaged disk)."""
+    import h5py
+
+    with h5py.File(path, "r") as file:
+        offset = file[name].id.get_chunk_info(0).byte_offset + at
+    with open(path, "r+b") as stream:
+        stream.seek(offset)
+        byte = stream.read(1)
+        stream.seek(offset)
+        stream.write(bytes([byte[0] ^ 0xFF]))

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from analysis.io import InputError, load_run
-from synthetic_run import Scenario, paper_case
+from synthetic_run import Scenario, corrupt_stored_chunk, paper_case, store_with_filters
 
 
 def test_reads_a_contract_file(run_file):
@@ -124,25 +124,11 @@ def test_non_finite_values_are_kept_for_an_incomplete_run_only(run_file):
         load_run(path)
 
 
-def _corrupt_first_chunk(path, name):
-    """Flip one byte inside the stored chunk of a dataset, behind h5py's back."""
-    with h5py.File(path, "r") as file:
-        offset = file[name].id.get_chunk_info(0).byte_offset
-    with open(path, "r+b") as stream:
-        stream.seek(offset + 3)
-        byte = stream.read(1)
-        stream.seek(offset + 3)
-        stream.write(bytes([byte[0] ^ 0xFF]))
-
-
 def test_a_checksum_failure_names_the_file_and_the_dataset(run_file):
     path = run_file(paper_case())
-    with h5py.File(path, "a") as file:
-        data = file["/interface/slip"][()]
-        del file["/interface/slip"]
-        file.create_dataset("/interface/slip", data=data, chunks=data.shape, fletcher32=True)
-    assert load_run(path).interface.slip.shape == data.shape  # intact: reads
-    _corrupt_first_chunk(path, "/interface/slip")
+    store_with_filters(path, "/interface/slip", fletcher32=True)
+    assert load_run(path).interface.slip.shape[1] == 64  # intact, with its checksum: reads
+    corrupt_stored_chunk(path, "/interface/slip")
     with pytest.raises(InputError, match=rf"{path}: dataset '/interface/slip' is corrupt: its HDF5 "
                                          "checksum does not match"):
         load_run(path)

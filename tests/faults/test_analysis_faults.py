@@ -16,7 +16,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "analysis"))
-from synthetic_run import Pulse, Scenario, paper_case, write_run  # noqa: E402
+from synthetic_run import (Pulse, Scenario, corrupt_stored_chunk, paper_case,  # noqa: E402
+                           store_with_filters, write_run)
 
 REFERENCE = ROOT / "study" / "reference" / "table1_celerity.csv"
 
@@ -148,16 +149,6 @@ def test_compare_accepts_a_known_mismatch_of_a_published_cell(tmp_path):
 
 # 13. Corruption is detected on read and reported with the file and the dataset.
 
-def _flip_a_byte(path, name):
-    with h5py.File(path, "r") as file:
-        offset = file[name].id.get_chunk_info(0).byte_offset
-    with open(path, "r+b") as stream:
-        stream.seek(offset + 7)
-        byte = stream.read(1)
-        stream.seek(offset + 7)
-        stream.write(bytes([byte[0] ^ 0xFF]))
-
-
 @pytest.mark.parametrize("filters, words", [
     (dict(fletcher32=True), "checksum does not match"),
     (dict(compression="gzip"), "is corrupt"),
@@ -165,11 +156,8 @@ def _flip_a_byte(path, name):
 def test_a_corrupt_dataset_is_reported_with_file_and_dataset(tmp_path, filters, words):
     run = tmp_path / "run.h5"
     write_run(run, paper_case())
-    with h5py.File(run, "a") as file:
-        data = file["/interface/slip_velocity"][()]
-        del file["/interface/slip_velocity"]
-        file.create_dataset("/interface/slip_velocity", data=data, chunks=data.shape, **filters)
-    _flip_a_byte(run, "/interface/slip_velocity")
+    store_with_filters(run, "/interface/slip_velocity", **filters)
+    corrupt_stored_chunk(run, "/interface/slip_velocity")
     out = tmp_path / "m.json"
     code, _, err = analysis("measure", run, "-o", out)
     assert code == 2 and not out.exists()
