@@ -35,7 +35,7 @@ def _stamp(dataset, unit, description):
 
 
 def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_over_H=2.0,
-              c_p=0.85, format_version=1, snapshots=True, periodic_connectivity=False,
+              c_p=0.85, format_version=2, snapshots=True, periodic_connectivity=False,
               t_end=1200.0):
     import h5py
 
@@ -71,13 +71,17 @@ def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_ov
         attrs = dict(format_version=format_version, creator="slidewave",
                      slidewave_version="0.0.0-test", git_commit="synthetic", call="synthetic",
                      created_utc="2024-01-01T00:00:00Z", config=json.dumps(config), complete=1,
-                     end_reason="t_end", E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s, c_l=c_l,
-                     p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
-                     n_steps_done=len(tg) - 1, t_onset_estimate=onset, u_x_preshear=0.09)
-        attrs["lambda"] = lam
+                     end_reason="t_end", n_steps_done=len(tg) - 1)
         for key, value in attrs.items():
             file.attrs[key] = value
-        file.create_dataset("/setup/config_input", data=json.dumps(config))
+        # format_version 2: the derived constants and the verbatim input are /setup attributes.
+        setup = dict(config_input=json.dumps(config), E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s,
+                     c_l=c_l, p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
+                     t_onset_estimate=onset, u_x_preshear=0.09, opening_threshold=0.01 * 0.001 * H)
+        setup["lambda"] = lam
+        group = file.create_group("setup")
+        for key, value in setup.items():
+            group.attrs[key] = value
         interface = {"x": (x, "m", "node positions"), "t": (t, "s", "output times"),
                      "slip_velocity": (slip_velocity, "m/s", "slip rate"),
                      "slip": (np.cumsum(slip_velocity, axis=0) * 4 * dt, "m", "slip"),
