@@ -6,7 +6,8 @@ Outputs (all written together or not at all):
   derived from it are empty when no metrics file is given for the cell or its celerity is undefined.
   deviation_rel = (celerity - published) / |published|; within_tol = |deviation_rel| <= tolerance;
   sign_match, regime_match compare with the published celerity and its regime (from c_s, c_l of
-  Table 1's material).
+  Table 1's material). end_reason is filled only for a run that did not complete (e.g.
+  ``contact_not_converged``): such a row is shown, and flagged, never passed off as a complete run.
 - ``table1.md``, ``table1.tex`` (booktabs tabular in the paper's layout: f rows, nu columns; for
   each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
 - ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
@@ -29,7 +30,7 @@ from analysis.reference import ReferenceCell, cell_key
 
 TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
-                  "min_T_over_N")
+                  "min_T_over_N", "end_reason")
 DEFAULT_TOLERANCE = 0.05
 
 
@@ -104,6 +105,13 @@ def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> 
 # Table 1
 
 
+def incomplete_reason(metrics: dict[str, Any]) -> str | None:
+    """The end_reason of a run that did not complete (`run_complete` false), else None."""
+    if metrics.get("run_complete", True) is not False:
+        return None
+    return str(metrics.get("end_reason") or "incomplete")
+
+
 def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
                 tolerance: float = DEFAULT_TOLERANCE) -> list[dict[str, Any]]:
     """One row per published cell (reference order), values as Python objects (None = empty).
@@ -126,7 +134,7 @@ def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
         if m is not None:
             row.update(category=m.get("category"), opening=m.get("opening"),
                        inversion=m.get("inversion"), min_T_over_N=m.get("min_T_over_N"),
-                       regime=m.get("regime"))
+                       regime=m.get("regime"), end_reason=incomplete_reason(m))
             c = _number(m["celerity"])
             if math.isfinite(c):
                 deviation = (c - cell.celerity) / abs(cell.celerity)
@@ -205,7 +213,8 @@ def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
             f"{r['nu']:g}", f"{r['f']:.2f}", f"{r['published']:.3f}",
             "missing" if c is None else f"{c:.3f}",
             "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
-            r["published_regime"] or "", r["regime"] or "", r["category"] or "",
+            r["published_regime"] or "", r["regime"] or "",
+            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else ""),
             _cell(r["min_T_over_N"], ".3f")]) + " |")
     return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
 
@@ -239,7 +248,8 @@ def table1_latex(rows: list[dict[str, Any]]) -> str:
             if r["celerity"] is None:
                 regenerated.append("--"), deviation.append("")
             else:
-                regenerated.append(number(r["celerity"], ".3f"))
+                # a run that did not complete is marked (note under the table)
+                regenerated.append(number(r["celerity"], ".3f") + (r"$^{*}$" if r["end_reason"] else ""))
                 deviation.append(number(100 * r["deviation_rel"], "+.1f"))
         if i:
             out.append(r"\addlinespace")
@@ -251,7 +261,12 @@ def table1_latex(rows: list[dict[str, Any]]) -> str:
             line(r"$c_s$ &", [number(s[0], ".3f") for s in speeds]),
             line(r"$\sqrt{2}\,c_s$ &", [number(s[1], ".3f") for s in speeds]),
             line(r"$c_l$ &", [number(s[2], ".3f") for s in speeds]),
-            r"\bottomrule", r"\end{tabular}"]
+            r"\bottomrule"]
+    ended = sorted({r["end_reason"] for r in rows if r["end_reason"] and r["celerity"] is not None})
+    if ended:
+        out.append(r"\multicolumn{%d}{l}{\footnotesize $^{*}$ run did not complete: %s} \\"
+                   % (len(nus) + 2, ", ".join(e.replace("_", r"\_") for e in ended)))
+    out.append(r"\end{tabular}")
     return "\n".join(out) + "\n"
 
 
