@@ -12,7 +12,9 @@ Outputs (all written together or not at all):
   each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
 - ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
   regime_matches, median_abs_deviation, max_abs_deviation, tolerance, missing_cells.
-- ``all_metrics.csv``: one row per metrics file, every scalar key.
+- ``all_metrics.csv``: one row per metrics file, every scalar key, then the columns derived from
+  them for tables and figures (``DERIVED_COLUMNS``, see ``derived_columns``), so that ``paper/`` and
+  ``figures/`` only select and format.
 """
 
 from __future__ import annotations
@@ -32,6 +34,8 @@ TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
                   "min_T_over_N", "end_reason")
 DEFAULT_TOLERANCE = 0.05
+DERIVED_COLUMNS = ("celerity_over_cs", "first_drop_start_after_onset", "first_drop_duration",
+                   "inside_flutter_wedge")
 
 
 # --------------------------------------------------------------------------------------------------
@@ -99,6 +103,67 @@ def _matches(value: Any, wanted: str) -> bool:
 def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> list[dict[str, Any]]:
     """Metrics whose every `key` equals `value` (numbers compared as numbers)."""
     return [m for m in metrics if all(k in m and _matches(m[k], w) for k, w in conditions)]
+
+
+# --------------------------------------------------------------------------------------------------
+# Columns derived from a run's metrics
+
+
+def read_flutter(path: str | Path) -> list[tuple[float, float, float]]:
+    """[(nu, f_lower, f_upper)] of `python3 -m analysis flutter-boundary` output (nan: no wedge)."""
+    try:
+        with open(path) as stream:
+            lines = [line.split() for line in stream if line.strip() and not line.startswith("#")]
+        return [(float(fields[0]), float(fields[1]), float(fields[2])) for fields in lines]
+    except OSError as err:
+        raise InputError(f"{path}: cannot read the flutter boundary ({err.strerror})") from None
+    except (ValueError, IndexError) as err:
+        raise InputError(f"{path}: not a flutter boundary 'nu f_lower f_upper' per line ({err})") from None
+
+
+def inside_flutter_wedge(boundary: list[tuple[float, float, float]], nu: float, f: float) -> bool | None:
+    """True when (nu, f) lies strictly inside the flutter wedge of steady sliding (Martins et al.
+    1995), its bounds interpolated linearly in nu between the tabulated values (a nan bound: the
+    nearer tabulated value); False outside or where there is no wedge; None when nu lies outside
+    the tabulated range."""
+    below = [b for b in boundary if b[0] <= nu + 1e-12]
+    above = [b for b in boundary if b[0] >= nu - 1e-12]
+    if not below or not above:
+        return None
+    a, b = below[-1], above[0]
+    w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
+    lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
+                    else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
+    return math.isfinite(lower) and lower < f < upper  # False for upper = nan
+
+
+def _difference(m: dict[str, Any], later: str, earlier: str) -> float | None:
+    a, b = m.get(later), m.get(earlier)
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in (a, b)):
+        return None
+    return float(a) - float(b)
+
+
+def derived_columns(m: dict[str, Any],
+                    flutter: list[tuple[float, float, float]] | None = None) -> dict[str, Any]:
+    """The DERIVED_COLUMNS of one run (None where an input is missing or undefined).
+
+    celerity_over_cs = celerity / c_s (-); first_drop_start_after_onset = first_drop_start_time -
+    onset_time (s); first_drop_duration = first_drop_bottom_time - first_drop_start_time (s);
+    inside_flutter_wedge (inside_flutter_wedge; only with a flutter boundary).
+    """
+    c, c_s = m.get("celerity"), m.get("c_s")
+    ratio = None
+    if (isinstance(c, (int, float)) and isinstance(c_s, (int, float)) and math.isfinite(c)
+            and math.isfinite(c_s) and c_s > 0):
+        ratio = c / c_s
+    return {
+        "celerity_over_cs": ratio,
+        "first_drop_start_after_onset": _difference(m, "first_drop_start_time", "onset_time"),
+        "first_drop_duration": _difference(m, "first_drop_bottom_time", "first_drop_start_time"),
+        "inside_flutter_wedge": (inside_flutter_wedge(flutter, _number(m["nu"]), _number(m["f"]))
+                                 if flutter else None),
+    }
 
 
 # --------------------------------------------------------------------------------------------------
@@ -281,7 +346,8 @@ def all_metrics_csv(metrics: list[dict[str, Any]]) -> str:
 
 
 def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
-              reference: list[ReferenceCell], tolerance: float) -> tuple[dict[str, str], dict[str, Any]]:
+              reference: list[ReferenceCell], tolerance: float,
+              flutter: list[tuple[float, float, float]] | None = None) -> tuple[dict[str, str], dict[str, Any]]:
     """All output texts by file name, and the summary.
 
     Parameters
@@ -294,6 +360,8 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         The published cells.
     tolerance
         Relative tolerance of within_tol.
+    flutter
+        The flutter boundary [(nu, f_lower, f_upper)] (read_flutter) for inside_flutter_wedge.
     """
     if not tolerance > 0:
         raise InputError(f"tolerance must be > 0 (got {tolerance})")
@@ -304,6 +372,6 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         "table1.md": table1_markdown(rows, summary),
         "table1.tex": table1_latex(rows),
         "summary.json": json.dumps(summary, indent=2) + "\n",
-        "all_metrics.csv": all_metrics_csv(metrics),
+        "all_metrics.csv": all_metrics_csv([{**m, **derived_columns(m, flutter)} for m in metrics]),
     }
     return files, summary

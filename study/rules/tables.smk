@@ -7,10 +7,12 @@ ruleorder: aggregate_study > aggregate
 
 
 rule aggregate:
-    """`python3 -m analysis aggregate`: one sweep's metrics -> Table 1 (csv/md/tex), summary, all metrics."""
+    """`python3 -m analysis aggregate`: one sweep's metrics -> Table 1 (csv/md/tex), summary, all metrics
+    (with the columns derived for tables and figures, e.g. inside_flutter_wedge)."""
     input:
         metrics=lambda wc: run_files(wc.sweep, "metrics.json"),
         reference=repo_path(config["reference"]["table"]),
+        flutter="results/theory/flutter.txt",
     output: table_files("{sweep}")
     params:
         directory="results/{sweep}/table",
@@ -18,7 +20,7 @@ rule aggregate:
         select=lambda wc: table_select(points(wc.sweep), sweep_spec(wc.sweep).get("highlight")),
     log: "results/{sweep}/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
         " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
@@ -28,6 +30,7 @@ rule aggregate_study:
     input:
         metrics=lambda wc: [f"{run_dir(sweep, name)}/metrics.json" for name, (sweep, _) in study_points().items()],
         reference=repo_path(config["reference"]["table"]),
+        flutter="results/theory/flutter.txt",
     output: table_files("study")
     params:
         directory="results/study/table",
@@ -35,7 +38,7 @@ rule aggregate_study:
         select=lambda wc: table_select({name: point for name, (_, point) in study_points().items()}),
     log: "results/study/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
         " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
@@ -97,3 +100,4 @@ rule flutter:
     params: nu=" ".join(f"{nu:.6g}" for nu in flutter_nu())
     log: "results/theory/logs/flutter.log"
     shell: "{PYTHON} -m analysis flutter-boundary --nu {params.nu} > {output} 2> {log}"
+

@@ -3,6 +3,8 @@ paper and figures read instead of computing them."""
 
 import math
 
+import pytest
+
 from analysis import aggregate as agg
 from analysis.reference import ReferenceCell
 
@@ -33,3 +35,36 @@ def test_complete_runs_leave_end_reason_empty_and_the_latex_without_a_note():
     files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
     assert all(line.endswith(",") for line in files["table1.csv"].splitlines()[1:])
     assert "did not complete" not in files["table1.tex"] and "run ended" not in files["table1.md"]
+
+
+# A wedge opening between nu = 0.1 and 0.3, closing at 0.4 (nan: no wedge), as flutter-boundary writes.
+BOUNDARY = [(0.0, math.nan, math.nan), (0.1, 1.0, 3.0), (0.3, 2.0, 5.0), (0.4, math.nan, math.nan)]
+
+
+@pytest.mark.parametrize("nu, f, inside", [
+    (0.1, 2.0, True), (0.1, 1.0, False), (0.1, 3.5, False),  # a tabulated nu: bounds 1 and 3, strict
+    (0.2, 1.4, False), (0.2, 1.6, True), (0.2, 3.9, True), (0.2, 4.1, False),  # interpolated: 1.5, 4
+    (0.0, 1.5, False), (0.4, 1.5, False),  # no wedge there
+    (0.35, 2.5, True),  # between a bound and nan: the nearer tabulated bounds (0.3's; 0.4's at w > 0.5)
+    (0.45, 1.5, None), (-0.1, 1.5, None),  # outside the table
+])
+def test_inside_flutter_wedge(nu, f, inside):
+    assert agg.inside_flutter_wedge(BOUNDARY, nu, f) is inside
+
+
+def test_derived_columns_are_the_formulas_of_their_docstring():
+    m = metrics(0.2, 1.5, 1.2, c_s=0.6, onset_time=700.0, first_drop_start_time=900.0,
+                first_drop_bottom_time=950.5)
+    assert agg.derived_columns(m, BOUNDARY) == {"celerity_over_cs": 2.0, "first_drop_start_after_onset": 200.0,
+                                                "first_drop_duration": 50.5, "inside_flutter_wedge": False}
+    empty = agg.derived_columns(metrics(0.2, 1.5, None, c_s=0.6, onset_time=None))
+    assert empty == dict.fromkeys(agg.DERIVED_COLUMNS)
+
+
+def test_all_metrics_csv_carries_the_derived_columns():
+    runs = [metrics(0.2, 1.6, 0.9, c_s=0.6)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+    header, row = files["all_metrics.csv"].splitlines()
+    values = dict(zip(header.split(","), row.split(",")))
+    assert values["celerity_over_cs"] == "1.5" and values["inside_flutter_wedge"] == "true"
+    assert values["first_drop_duration"] == ""

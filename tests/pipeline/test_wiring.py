@@ -25,7 +25,8 @@ def dry(workdir, *args, **kwargs):
 
 def test_ci_target(workdir):
     _, counts = dry(workdir, "ci")
-    assert counts == {"aggregate": 1, "ci": 1, "configure": 2, "fig_spacetime": 1, "measure": 2, "simulate": 2}
+    assert counts == {"aggregate": 1, "ci": 1, "configure": 2, "fig_spacetime": 1, "flutter": 1, "measure": 2,
+                      "simulate": 2}
 
 
 def test_quick_is_the_default_target(workdir):
