@@ -22,7 +22,7 @@ from analysis.errors import AnalysisError  # noqa: E402
 from analysis.io import load_run  # noqa: E402
 
 __all__ = ["AnalysisError", "InputError", "Run", "open_run", "read_csv", "read_flutter",
-           "read_json", "select", "wave_speeds"]
+           "read_json", "select"]
 
 
 class InputError(Exception):
@@ -176,12 +176,3 @@ def read_flutter(path):
     if not points:
         raise InputError(f"{path}: no 'nu f_lower f_upper' line")
     return np.array(sorted(points))
-
-
-def wave_speeds(nu, E=1000.0, rho=1000.0):
-    """(c_s, c_l) in m/s for plane strain: c_s = sqrt(E/(2(1+nu)rho)),
-    c_l = sqrt(E(1-nu)/((1+nu)(1-2nu)rho)). Only for theory lines when no column carries them."""
-    nu = np.asarray(nu, dtype=float)
-    c_s = np.sqrt(E / (2.0 * (1.0 + nu) * rho))
-    c_l = np.sqrt(E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu) * rho))
-    return c_s, c_l
