@@ -37,7 +37,9 @@ def main(argv=None):
     parser.add_argument("--force", action="store_true", help="overwrite existing files")
     args = parser.parse_args(argv)
     os.makedirs(args.dir, exist_ok=True)
-    files = {"numbers.tex": make_numbers.render(make_numbers.all_macros(), []),
+    placeholders = {name: r"\notavailable" for name in make_numbers.MACRO_NAMES}
+    files = {"numbers.tex": "\\providecommand{\\notavailable}{\\textit{n/a}}\n"
+                            + make_numbers.render(placeholders, ["nothing: placeholders"]),
              "table1.tex": TABLE}
     for name, text in files.items():
         path = os.path.join(args.dir, name)
