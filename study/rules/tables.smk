@@ -1,6 +1,6 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
 
-localrules: aggregate, aggregate_study, compare, reference_check, flutter
+localrules: aggregate, aggregate_study, compare, reference_check, flutter, publish_table, publish_results
 
 
 ruleorder: aggregate_study > aggregate
@@ -101,3 +101,28 @@ rule flutter:
     log: "results/theory/logs/flutter.log"
     shell: "{PYTHON} -m analysis flutter-boundary --nu {params.nu} > {output} 2> {log}"
 
+
+# study/results/: the committed copy of the study's small tables (no HDF5), written only by this rule.
+PUBLISHED_TABLES = ("table1.csv", "summary.json", "all_metrics.csv")
+
+
+def published_sweeps():
+    """The sweeps whose tables study/results/ keeps: the paper's study, its merged table, the CI
+    reference check and the method variants, each once."""
+    sweeps = [*config["study"], "study", config["reference"]["check_sweep"], *config["paper"]["variants"].values()]
+    return list(dict.fromkeys(sweeps))
+
+
+rule publish_table:
+    """One table of a sweep copied into study/results/<sweep>/ (the committed results)."""
+    input: "results/{sweep}/table/{name}"
+    output: repo_path("study/results/{sweep}/{name}")
+    wildcard_constraints: name="|".join(re.escape(n) for n in PUBLISHED_TABLES)
+    log: "results/{sweep}/logs/publish_{name}.log"
+    shell: "cp {input} {output} 2> {log}"
+
+
+rule publish_results:
+    """`snakemake publish_results`: refresh study/results/ from results/ (runs whatever is missing:
+    the whole study, the variants and the CI sweep). Commit study/results/ afterwards."""
+    input: [repo_path(f"study/results/{sweep}/{name}") for sweep in published_sweeps() for name in PUBLISHED_TABLES]
