@@ -165,7 +165,11 @@ def metrics_rows():
                  friction_energy_share_opening=0.5 if opening else None,
                  dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
                  below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, run_complete=True,
-                 pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H))
+                 pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
+                 localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
+                 first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
+                 first_drop_bottom_T_over_N=-0.3 if "inversion" in category else 0.6,
+                 later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
         # What `analysis aggregate` adds to all_metrics.csv.
         r.update(aggregate.derived_columns(r, flutter_boundary()))

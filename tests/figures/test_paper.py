@@ -88,10 +88,15 @@ def test_a_missing_number_is_an_error(data, tmp_path):
                      "-o", tmp_path / "x.tex")
     assert result.returncode == 2 and "inside_flutter_wedge" in result.stderr
     assert not (tmp_path / "x.tex").exists()
-    # A sweep without two values of its parameter at the reference cell cannot be quoted.
+    # A sweep must give one run per value of its parameter, and at least two values.
     result = command(PAPER / "make_numbers.py", *numbers_args(data), "--sweep", "mesh", "rho",
                      data / "sweep_mesh.csv", "-o", tmp_path / "x.tex")
-    assert result.returncode == 2 and "sweep 'mesh' has 1 value(s) of rho" in result.stderr
+    assert result.returncode == 2 and "two runs with rho = 1000 at the reference cell" in result.stderr
+    rows = (data / "sweep_mesh.csv").read_text().splitlines()
+    (tmp_path / "one.csv").write_text("\n".join(rows[:2]) + "\n")
+    result = command(PAPER / "make_numbers.py", *numbers_args(data), "--sweep", "mesh", "elements_per_H",
+                     tmp_path / "one.csv", "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "sweep 'mesh' has 1 value(s) of elements_per_H" in result.stderr
     result = command(PAPER / "make_numbers.py", *numbers_args(data, **{"--summary": tmp_path / "s.json"}),
                      "-o", tmp_path / "x.tex")
     assert result.returncode == 2 and "cannot read" in result.stderr
@@ -173,3 +178,19 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
         text = subprocess.run(["pdftotext", str(paper / "reproduction.pdf"), "-"],
                               capture_output=True, text=True).stdout
         assert "not generated yet" not in text and "n/a" not in text
+
+
+def test_table1_flags_a_run_that_did_not_complete(data, tmp_path):
+    lines = (data / "table1.csv").read_text().splitlines()
+    header = lines[0].split(",")
+    row = next(i for i, line in enumerate(lines) if line.startswith("0.2,1.5,"))
+    cells = lines[row].split(",")
+    cells[header.index("end_reason")] = "contact_not_converged"
+    lines[row] = ",".join(cells)
+    (tmp_path / "table1.csv").write_text("\n".join(lines) + "\n")
+    out = tmp_path / "table1.tex"
+    assert command(PAPER / "make_table1.py", tmp_path / "table1.csv", "-o", out).returncode == 0
+    text = out.read_text()
+    assert text.count("$^{*}$") == 2 and "run did not complete: contact not converged" in text  # mark, note
+    assert command(PAPER / "make_table1.py", data / "table1.csv", "-o", out).returncode == 0
+    assert "did not complete" not in out.read_text()
