@@ -19,7 +19,8 @@ REPO = Path(__file__).resolve().parents[2]
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
 SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
 
-# Two H/32 points with a small time step: long enough (about 10 s each) to be stopped in the middle.
+# Two H/32 points with a small time step: about 13000 steps each (3 s of CPU), long enough to be
+# stopped in the middle also on an idle machine.
 SWEEP = "faults_interrupted"
 CONFIG = f"""
 sweeps:
@@ -29,7 +30,7 @@ sweeps:
     points:
       - {{nu: 0.2, f: 1.5}}
       - {{nu: 0.2, f: 0.5}}
-    run_length: {{t_end: 250.0, stop_after_opening_transits: null}}
+    run_length: {{t_end: 600.0, stop_after_opening_transits: null}}
     products: []
 """
 
@@ -53,16 +54,16 @@ def point_dirs(work):
 
 
 def wait_until_simulating(work, process, timeout=60.0):
-    """Returns once both solver runs have started (their logs exist and have run a moment)."""
+    """Returns once both solver runs have started (their logs exist) and run for half a second."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if process.poll() is not None:
             raise AssertionError(f"snakemake ended before it was interrupted:\n{process.communicate()}")
         logs = [p / "logs" / "simulate.log" for p in point_dirs(work)]
         if len(logs) == 2 and all(log.exists() for log in logs):
-            time.sleep(1.5)
+            time.sleep(0.5)
             return
-        time.sleep(0.2)
+        time.sleep(0.05)
     raise AssertionError("the simulations did not start within a minute")
 
 
