@@ -75,9 +75,14 @@ def test_sigterm_during_a_sweep_leaves_no_result_and_the_rerun_recomputes(tmp_pa
     # 1. `timeout -s TERM ... snakemake`: the signal goes to Snakemake's whole process group.
     process = subprocess.Popen(snakemake_command(work, config_file), env=environment, text=True,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
-    wait_until_simulating(work, process)
-    os.killpg(process.pid, signal.SIGTERM)
-    output, _ = process.communicate(timeout=60)
+    try:
+        wait_until_simulating(work, process)
+        os.killpg(process.pid, signal.SIGTERM)
+        output, _ = process.communicate(timeout=60)
+    finally:
+        if process.poll() is None:  # the test failed before or while stopping it: leave nothing running
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
     assert process.returncode != 0, output
 
     # 2. Nothing that looks like a result: no run.h5 (an interrupted run is only RUN.partial.h5 beside
