@@ -25,9 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
-
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from analysis.aggregate import summarize  # noqa: E402
+from analysis.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match")
 

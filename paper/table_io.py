@@ -3,42 +3,14 @@ writes."""
 
 from __future__ import annotations
 
-import csv
-import math
 import os
+import sys
 import tempfile
 
-
-class InputError(Exception):
-    """An input table is missing, unreadable or lacks what the paper needs."""
-
-
-def parse(text):
-    """A CSV cell: '' (and nan, none, null) -> nan, true/false -> bool, a number -> float, else str."""
-    text = (text or "").strip()
-    if text.lower() in ("", "nan", "none", "null"):
-        return math.nan
-    if text.lower() in ("true", "false"):
-        return text.lower() == "true"
-    try:
-        return float(text)
-    except ValueError:
-        return text
-
-
-def read_rows(path, required):
-    """Rows of a CSV table as dicts of parsed cells; InputError naming missing required columns."""
-    try:
-        with open(path, newline="") as stream:
-            reader = csv.DictReader(stream)
-            rows = [{k: parse(v) for k, v in row.items() if k} for row in reader]
-            columns = reader.fieldnames or []
-    except OSError as err:
-        raise InputError(f"{path}: cannot read ({err.strerror})") from None
-    missing = [c for c in required if c not in columns]
-    if missing:
-        raise InputError(f"{path}: missing required column(s) {', '.join(missing)}")
-    return rows
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# The paper scripts read the study's tables with the analysis package's reader, and report its error.
+from analysis.errors import InputError  # noqa: E402,F401
+from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
 
 
 def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:

@@ -68,3 +68,18 @@ def test_all_metrics_csv_carries_the_derived_columns():
     values = dict(zip(header.split(","), row.split(",")))
     assert values["celerity_over_cs"] == "1.5" and values["inside_flutter_wedge"] == "true"
     assert values["first_drop_duration"] == ""
+
+
+def test_the_tables_read_back_as_written(tmp_path):
+    """analysis.table_csv (the reader of figures/ and paper/) on aggregate's own output."""
+    from analysis.errors import InputError
+    from analysis.table_csv import read_table
+
+    runs = [metrics(0.2, 1.5, 2.1, run_complete=False, end_reason="contact_not_converged", c_s=0.7)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+    (tmp_path / "table1.csv").write_text(files["table1.csv"])
+    rows = read_table(tmp_path / "table1.csv", ("nu", "celerity", "within_tol", "end_reason"))
+    assert rows[0]["celerity"] == 2.1 and rows[0]["within_tol"] is False
+    assert rows[0]["end_reason"] == "contact_not_converged" and math.isnan(rows[1]["celerity"])
+    with pytest.raises(InputError, match="missing required column.s. no_such_column"):
+        read_table(tmp_path / "table1.csv", ("no_such_column",))

@@ -11,7 +11,7 @@ import synthetic
 from figure_support import PAPER, command
 
 sys.path.insert(0, str(PAPER))
-import make_numbers  # noqa: E402
+from numbers_tex import MACRO_NAMES  # noqa: E402
 
 LATEXMK = shutil.which("latexmk")
 needs_latex = pytest.mark.skipif(LATEXMK is None, reason="latexmk not installed "
@@ -73,7 +73,7 @@ def test_numbers_from_the_study(data, tmp_path):
     assert m["periodRatios"] == r"\ensuremath{2}, \ensuremath{4}, \ensuremath{6}"
     assert m["celerityMesh"].count("ensuremath") == 2 * 4  # H/16, 32, 64, 128: value (mesh) each
     assert m["nSupersonicBackward"] == r"\ensuremath{2}"
-    assert set(m) == set(make_numbers.MACRO_NAMES)
+    assert set(m) == set(MACRO_NAMES)
     used = set(re.findall(r"\\(\w+)", (PAPER / "reproduction.tex").read_text()))
     assert "notavailable" not in "".join(m[k] for k in m if k in used)
 
