@@ -16,8 +16,11 @@ from snakemake.utils import min_version, validate
 
 min_version("7.21")
 sys.path.insert(0, workflow.basedir)
+from study.config_overrides import check_overrides
 from study.sweeps import typed_numbers
 
+# Here `config` holds only the command line's values: check their types before Snakemake merges them.
+check_overrides(config, os.path.join(workflow.basedir, "study/config.yaml"))
 configfile: os.path.join(workflow.basedir, "study/config.yaml")
 config.update(typed_numbers(config))  # --config passes nested numbers as strings
 validate(config, "study/config.schema.yaml")

@@ -6,12 +6,15 @@ Outputs (all written together or not at all):
   derived from it are empty when no metrics file is given for the cell or its celerity is undefined.
   deviation_rel = (celerity - published) / |published|; within_tol = |deviation_rel| <= tolerance;
   sign_match, regime_match compare with the published celerity and its regime (from c_s, c_l of
-  Table 1's material).
+  Table 1's material). end_reason is filled only for a run that did not complete (e.g.
+  ``contact_not_converged``): such a row is shown, and flagged, never passed off as a complete run.
 - ``table1.md``, ``table1.tex`` (booktabs tabular in the paper's layout: f rows, nu columns; for
   each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
 - ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
   regime_matches, median_abs_deviation, max_abs_deviation, tolerance, missing_cells.
-- ``all_metrics.csv``: one row per metrics file, every scalar key.
+- ``all_metrics.csv``: one row per metrics file, every scalar key, then the columns derived from
+  them for tables and figures (``DERIVED_COLUMNS``, see ``derived_columns``), so that ``paper/`` and
+  ``figures/`` only select and format.
 """
 
 from __future__ import annotations
@@ -29,8 +32,10 @@ from analysis.reference import ReferenceCell, cell_key
 
 TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
-                  "min_T_over_N")
+                  "min_T_over_N", "end_reason")
 DEFAULT_TOLERANCE = 0.05
+DERIVED_COLUMNS = ("celerity_over_cs", "first_drop_start_after_onset", "first_drop_duration",
+                   "inside_flutter_wedge")
 
 
 # --------------------------------------------------------------------------------------------------
@@ -101,7 +106,75 @@ def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> 
 
 
 # --------------------------------------------------------------------------------------------------
+# Columns derived from a run's metrics
+
+
+def read_flutter(path: str | Path) -> list[tuple[float, float, float]]:
+    """[(nu, f_lower, f_upper)] of `python3 -m analysis flutter-boundary` output (nan: no wedge)."""
+    try:
+        with open(path) as stream:
+            lines = [line.split() for line in stream if line.strip() and not line.startswith("#")]
+        return [(float(fields[0]), float(fields[1]), float(fields[2])) for fields in lines]
+    except OSError as err:
+        raise InputError(f"{path}: cannot read the flutter boundary ({err.strerror})") from None
+    except (ValueError, IndexError) as err:
+        raise InputError(f"{path}: not a flutter boundary 'nu f_lower f_upper' per line ({err})") from None
+
+
+def inside_flutter_wedge(boundary: list[tuple[float, float, float]], nu: float, f: float) -> bool | None:
+    """True when (nu, f) lies strictly inside the flutter wedge of steady sliding (Martins et al.
+    1995), its bounds interpolated linearly in nu between the tabulated values (a nan bound: the
+    nearer tabulated value); False outside or where there is no wedge; None when nu lies outside
+    the tabulated range."""
+    below = [b for b in boundary if b[0] <= nu + 1e-12]
+    above = [b for b in boundary if b[0] >= nu - 1e-12]
+    if not below or not above:
+        return None
+    a, b = below[-1], above[0]
+    w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
+    lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
+                    else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
+    return math.isfinite(lower) and lower < f < upper  # False for upper = nan
+
+
+def _difference(m: dict[str, Any], later: str, earlier: str) -> float | None:
+    a, b = m.get(later), m.get(earlier)
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in (a, b)):
+        return None
+    return float(a) - float(b)
+
+
+def derived_columns(m: dict[str, Any],
+                    flutter: list[tuple[float, float, float]] | None = None) -> dict[str, Any]:
+    """The DERIVED_COLUMNS of one run (None where an input is missing or undefined).
+
+    celerity_over_cs = celerity / c_s (-); first_drop_start_after_onset = first_drop_start_time -
+    onset_time (s); first_drop_duration = first_drop_bottom_time - first_drop_start_time (s);
+    inside_flutter_wedge (inside_flutter_wedge; only with a flutter boundary).
+    """
+    c, c_s = m.get("celerity"), m.get("c_s")
+    ratio = None
+    if (isinstance(c, (int, float)) and isinstance(c_s, (int, float)) and math.isfinite(c)
+            and math.isfinite(c_s) and c_s > 0):
+        ratio = c / c_s
+    return {
+        "celerity_over_cs": ratio,
+        "first_drop_start_after_onset": _difference(m, "first_drop_start_time", "onset_time"),
+        "first_drop_duration": _difference(m, "first_drop_bottom_time", "first_drop_start_time"),
+        "inside_flutter_wedge": (inside_flutter_wedge(flutter, _number(m["nu"]), _number(m["f"]))
+                                 if flutter else None),
+    }
+
+
+# --------------------------------------------------------------------------------------------------
 # Table 1
+
+
+def incomplete_reason(metrics: dict[str, Any]) -> str | None:
+    """The end_reason of a run that did not complete (`run_complete` false), else None."""
+    if metrics.get("run_complete", True) is not False:
+        return None
+    return str(metrics.get("end_reason") or "incomplete")
 
 
 def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
@@ -126,7 +199,7 @@ def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
         if m is not None:
             row.update(category=m.get("category"), opening=m.get("opening"),
                        inversion=m.get("inversion"), min_T_over_N=m.get("min_T_over_N"),
-                       regime=m.get("regime"))
+                       regime=m.get("regime"), end_reason=incomplete_reason(m))
             c = _number(m["celerity"])
             if math.isfinite(c):
                 deviation = (c - cell.celerity) / abs(cell.celerity)
@@ -205,7 +278,8 @@ def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
             f"{r['nu']:g}", f"{r['f']:.2f}", f"{r['published']:.3f}",
             "missing" if c is None else f"{c:.3f}",
             "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
-            r["published_regime"] or "", r["regime"] or "", r["category"] or "",
+            r["published_regime"] or "", r["regime"] or "",
+            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else ""),
             _cell(r["min_T_over_N"], ".3f")]) + " |")
     return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
 
@@ -239,7 +313,8 @@ def table1_latex(rows: list[dict[str, Any]]) -> str:
             if r["celerity"] is None:
                 regenerated.append("--"), deviation.append("")
             else:
-                regenerated.append(number(r["celerity"], ".3f"))
+                # a run that did not complete is marked (note under the table)
+                regenerated.append(number(r["celerity"], ".3f") + (r"$^{*}$" if r["end_reason"] else ""))
                 deviation.append(number(100 * r["deviation_rel"], "+.1f"))
         if i:
             out.append(r"\addlinespace")
@@ -251,7 +326,12 @@ def table1_latex(rows: list[dict[str, Any]]) -> str:
             line(r"$c_s$ &", [number(s[0], ".3f") for s in speeds]),
             line(r"$\sqrt{2}\,c_s$ &", [number(s[1], ".3f") for s in speeds]),
             line(r"$c_l$ &", [number(s[2], ".3f") for s in speeds]),
-            r"\bottomrule", r"\end{tabular}"]
+            r"\bottomrule"]
+    ended = sorted({r["end_reason"] for r in rows if r["end_reason"] and r["celerity"] is not None})
+    if ended:
+        out.append(r"\multicolumn{%d}{l}{\footnotesize $^{*}$ run did not complete: %s} \\"
+                   % (len(nus) + 2, ", ".join(e.replace("_", r"\_") for e in ended)))
+    out.append(r"\end{tabular}")
     return "\n".join(out) + "\n"
 
 
@@ -266,7 +346,8 @@ def all_metrics_csv(metrics: list[dict[str, Any]]) -> str:
 
 
 def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
-              reference: list[ReferenceCell], tolerance: float) -> tuple[dict[str, str], dict[str, Any]]:
+              reference: list[ReferenceCell], tolerance: float,
+              flutter: list[tuple[float, float, float]] | None = None) -> tuple[dict[str, str], dict[str, Any]]:
     """All output texts by file name, and the summary.
 
     Parameters
@@ -279,6 +360,8 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         The published cells.
     tolerance
         Relative tolerance of within_tol.
+    flutter
+        The flutter boundary [(nu, f_lower, f_upper)] (read_flutter) for inside_flutter_wedge.
     """
     if not tolerance > 0:
         raise InputError(f"tolerance must be > 0 (got {tolerance})")
@@ -289,6 +372,6 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         "table1.md": table1_markdown(rows, summary),
         "table1.tex": table1_latex(rows),
         "summary.json": json.dumps(summary, indent=2) + "\n",
-        "all_metrics.csv": all_metrics_csv(metrics),
+        "all_metrics.csv": all_metrics_csv([{**m, **derived_columns(m, flutter)} for m in metrics]),
     }
     return files, summary

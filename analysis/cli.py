@@ -1,20 +1,35 @@
 """Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,flutter-boundary} ...`.
 
-Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign; 2 bad input
-(the message on stderr names the file and the problem; no output file is written).
+Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
+none; 2 bad input (the message on stderr names the file and the problem; no output file is
+written), among them a run that was interrupted (`measure` without `--allow-incomplete`) and an
+output path that is one of the inputs.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
-from analysis.errors import AnalysisError
+from analysis.errors import InputError
 
 EXIT_FAILED_CHECK = 1
 EXIT_BAD_INPUT = 2
+
+
+def _refuse_input_as_output(output: Path, inputs: list[Path]) -> None:
+    """InputError when the output path is one of the inputs (same path or same file), before
+    anything is written: `measure X -o X` would replace the run with its metrics."""
+    for source in inputs:
+        same = Path(os.path.abspath(output)) == Path(os.path.abspath(source))
+        if not same and output.exists() and source.exists():
+            same = os.path.samefile(output, source)
+        if same:
+            raise InputError(f"{output}: the output is the input file {source}; choose another "
+                             "output path (nothing was written)")
 
 
 def _measure(args: argparse.Namespace) -> int:
@@ -22,20 +37,30 @@ def _measure(args: argparse.Namespace) -> int:
     from analysis.io import load_run
     from analysis.measure import Settings, measure_run
 
-    settings = Settings(threshold_rel=args.threshold, opening_rel=args.opening_threshold,
-                        window_length=args.window, major_duration=args.major_duration)
+    _refuse_input_as_output(args.output, [args.run])
+    settings = Settings(threshold_rel=args.threshold, window_length=args.window,
+                        major_duration=args.major_duration)
     try:
         settings.check()
     except ValueError as err:
-        raise AnalysisError(str(err)) from None
-    metrics = measure_run(load_run(args.run), settings)
+        raise InputError(str(err)) from None
+    run = load_run(args.run)
+    # An interrupted run stopped for a reason that has nothing to do with the physics; its
+    # metrics would look like a result (a contact failure is a physical outcome, measured).
+    if run.end_reason == "interrupted" and not args.allow_incomplete:
+        raise InputError(f"{args.run}: the run was interrupted (end_reason 'interrupted', "
+                         "complete = 0): its metrics would not be a result; resume or rerun it, "
+                         "or pass --allow-incomplete to measure it anyway")
+    metrics = measure_run(run, settings)
     write_file(args.output, json.dumps(metrics, indent=2, allow_nan=False) + "\n")
     c, xc = metrics["celerity"], metrics["celerity_xcorr"]
     print(f"{args.run}: celerity "
           + ("undefined (" + metrics["celerity_reason"] + ")" if c is None else
              f"{c:+.4f} m/s (cross-correlation {xc if xc is None else format(xc, '+.4f')})")
           + f", regime {metrics['regime']}, category {metrics['category']}, "
-          f"min T/N {metrics['min_T_over_N']:.3f} -> {args.output}")
+          f"min T/N {metrics['min_T_over_N']:.3f}"
+          + ("" if metrics["complete"] else f", INCOMPLETE ({metrics['end_reason']})")
+          + f" -> {args.output}")
     return 0
 
 
@@ -45,9 +70,11 @@ def _aggregate(args: argparse.Namespace) -> int:
     from analysis.reference import read_reference
 
     reference = read_reference(args.reference)
+    _refuse_input_as_output(args.output, list(args.metrics) + [args.reference])
     metrics = [agg.load_metrics(path) for path in args.metrics]
     table_metrics = agg.select(metrics, agg.parse_selection(args.select))
-    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance)
+    flutter = agg.read_flutter(args.flutter) if args.flutter else None
+    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance, flutter)
     write_files({args.output / name: text for name, text in files.items()})
     print(agg.summary_line(summary) + f" -> {args.output}")
     return 0
@@ -57,7 +84,8 @@ def _compare(args: argparse.Namespace) -> int:
     from analysis.compare import compare, read_table
     from analysis.reference import read_reference
 
-    result = compare(read_table(args.table), read_reference(args.reference), args.tolerance,
+    reference = read_reference(args.reference)
+    result = compare(read_table(args.table), reference, args.tolerance,
                      args.min_within, ratchet=args.ratchet,
                      known_mismatches=tuple(args.known_mismatch or ()))
     for note in result.notes:
@@ -72,10 +100,10 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
     try:
         from analysis.flutter import flutter_boundary
     except ImportError as err:
-        raise AnalysisError(f"the flutter-boundary theory (analysis/flutter.py) is not available: {err}") from None
+        raise InputError(f"the flutter-boundary theory (analysis/flutter.py) is not available: {err}") from None
     for nu in args.nu:
         if not 0.0 <= nu < 0.5:
-            raise AnalysisError(f"--nu {nu} outside [0, 0.5)")
+            raise InputError(f"--nu {nu} outside [0, 0.5)")
     for nu in args.nu:
         lower, upper = flutter_boundary(nu)
         print(f"{nu:g} {lower:.6g} {upper:.6g}")
@@ -85,7 +113,6 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
 def build_parser() -> argparse.ArgumentParser:
     from analysis.aggregate import DEFAULT_TOLERANCE
     from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
-    from analysis.opening import DEFAULT_OPENING_REL
     from analysis.reference import DEFAULT_REFERENCE
 
     parser = argparse.ArgumentParser(prog="python3 -m analysis",
@@ -93,12 +120,13 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     p = commands.add_parser("measure", help="one run.h5 -> metrics.json")
-    p.add_argument("run", type=Path, help="run file (format_version 1)")
+    p.add_argument("run", type=Path, help="run file (format_version 2)")
     p.add_argument("-o", "--output", type=Path, required=True, help="metrics JSON to write")
     p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD_REL,
                    help="slip-velocity threshold relative to V0 (default %(default)g)")
-    p.add_argument("--opening-threshold", type=float, default=DEFAULT_OPENING_REL,
-                   help="opening threshold relative to |Uy| (default %(default)g)")
+    p.add_argument("--allow-incomplete", action="store_true",
+                   help="also measure a run that was interrupted (its metrics say so: complete, "
+                        "end_reason); a contact failure is always measured")
     p.add_argument("--window", type=float, default=DEFAULT_WINDOW_LENGTH,
                    help="celerity window length in s (default %(default)g)")
     p.add_argument("--major-duration", type=float, default=DEFAULT_MAJOR_DURATION,
@@ -114,6 +142,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="relative tolerance of within_tol (default %(default)g)")
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value enter Table 1 (repeatable), e.g. elements_per_H=32")
+    p.add_argument("--flutter", type=Path, help="flutter boundary (flutter-boundary output): adds the "
+                   "column inside_flutter_wedge to all_metrics.csv")
     p.set_defaults(handler=_aggregate)
 
     p = commands.add_parser("compare", help="check a table1.csv against the published celerities")
@@ -143,9 +173,11 @@ def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return args.handler(args)
-    except AnalysisError as err:
+    except InputError as err:
         print(f"error: {err}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except OSError as err:
-        print(f"error: {err.filename or ''}: {err.strerror or err}", file=sys.stderr)
+        # The file that failed: the one the OS names, else the command's output.
+        where = err.filename or getattr(args, "output", None) or "?"
+        print(f"error: {where}: {err.strerror or err}", file=sys.stderr)
         return EXIT_BAD_INPUT

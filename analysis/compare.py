@@ -9,12 +9,16 @@ when something is required of it). Deviations are recomputed from the reference;
 Ratchet mode (`ratchet=True`, the CI gate of the pipeline): a cell out of tolerance is reported but is
 not a failure; a wrong sign or a wrong regime (subsonic / intersonic / supersonic) is, and so is a
 count of cells within tolerance below `min_within` (the ratchet in study/reference/ratchet.json).
+
+A check that compared no cell at all (an empty table, a table of other cells) fails in either
+mode: nothing was shown. A known mismatch must name a published cell as "nu=N f=F".
 """
 
 from __future__ import annotations
 
 import csv
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -39,11 +43,12 @@ class Comparison:
 
     @property
     def passed(self) -> bool:
-        return not self.failures and self.within >= self.min_within
+        return not self.failures and self.compared > 0 and self.within >= self.min_within
 
     def summary(self) -> str:
         verdict = "PASS" if self.passed else "FAIL"
-        return (f"compare: {verdict}: {self.compared} cells compared, {self.within} within "
+        nothing = " (nothing compared: no published cell has a measured celerity)" if not self.compared else ""
+        return (f"compare: {verdict}{nothing}: {self.compared} cells compared, {self.within} within "
                 f"{100 * self.tolerance:g}% (at least {self.min_within} required), "
                 f"signs {self.sign_matches}/{self.compared}, {self.missing} published cells without "
                 f"a measurement")
@@ -74,6 +79,29 @@ def read_table(path: str | Path) -> dict[tuple[float, float], float]:
     return table
 
 
+_CELL_NAME = re.compile(r"^nu=(\S+) f=(\S+)$")
+
+
+def parse_cell_name(text: str, reference: list[ReferenceCell]) -> str:
+    """The printed name "nu=N f=F" of a published cell, from a --known-mismatch value.
+
+    InputError when the text is not of that form, holds no numbers, or names no published cell.
+    """
+    match = _CELL_NAME.match(text.strip())
+    try:
+        key = cell_key(float(match.group(1)), float(match.group(2))) if match else None
+    except ValueError:
+        key = None
+    if key is None or not all(math.isfinite(v) for v in key):
+        raise InputError(f"--known-mismatch {text!r}: expected \"nu=N f=F\" with numbers, "
+                         "e.g. \"nu=0.49 f=1.5\"")
+    for cell in reference:
+        if cell.key == key:
+            return f"nu={cell.nu:g} f={cell.f:g}"
+    raise InputError(f"--known-mismatch {text!r}: no published cell nu={key[0]:g} f={key[1]:g} "
+                     "in the reference")
+
+
 def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCell],
             tolerance: float, min_within: int = 0, ratchet: bool = False,
             known_mismatches: tuple[str, ...] = ()) -> Comparison:
@@ -94,12 +122,13 @@ def compare(table: dict[tuple[float, float], float], reference: list[ReferenceCe
     known_mismatches
         Cells ("nu=0.49 f=1.5", as printed) whose wrong sign or regime is recorded in the ratchet
         file with its explanation: reported as KNOWN notes instead of failures, so that only a new
-        mismatch fails the gate.
+        mismatch fails the gate. Each must name a published cell (InputError otherwise).
     """
     if not tolerance > 0:
         raise InputError(f"--tolerance must be > 0 (got {tolerance})")
     if min_within < 0:
         raise InputError(f"--min-within must be >= 0 (got {min_within})")
+    known_mismatches = tuple(parse_cell_name(text, reference) for text in known_mismatches)
     failures, notes = [], []
     compared = within = signs = missing = 0
     for cell in reference:

@@ -1,17 +1,15 @@
-"""Exceptions of the analysis package.
+"""The one exception of the Python side for an input it cannot use.
 
-Every problem with an input (a run file, a metrics file, a table) is an `AnalysisError` whose message
-names the file and what is wrong; the command line turns it into one line on stderr and exit code 2.
+Every problem with an input (a run file, a metrics file, a table, a reference, a command-line value)
+is an `InputError` whose message names the file (or option) and what is wrong; each command line
+(analysis, figures, paper) turns it into one line on stderr and a non-zero exit code, and writes no
+output file.
 """
 
 
-class AnalysisError(Exception):
-    """Base class: an input the analysis cannot use."""
+class InputError(Exception):
+    """An input that is missing, unreadable, malformed, of an unknown format or out of range."""
 
 
-class RunFormatError(AnalysisError):
-    """A run file that is not a readable slidewave `run.h5` of a known `format_version`."""
-
-
-class InputError(AnalysisError):
-    """A metrics file, a table or a reference that is missing, malformed or inconsistent."""
+#: Former name of InputError (figures/_data.py imports it); the same class, not a second concept.
+AnalysisError = InputError

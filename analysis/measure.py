@@ -2,7 +2,11 @@
 
 `measure_run` is a pure function of a loaded run (`analysis.io.RunData`) and the measurement
 settings; `analysis/README.md` explains every key. Values that cannot be measured are None
-(JSON null), never a guess.
+(JSON null), never a guess. The solver's constants (c_s, c_l, p0, dt, the onset estimate, the
+opening threshold) are read from the run, never recomputed.
+
+f = 0 (no friction): T = 0, so T/N is 0 up to round-off; there is nothing to drop and nothing to
+invert: no frictional drops, `inversion` false (a round-off T/N of -1e-17 is not an inversion).
 """
 
 from __future__ import annotations
@@ -14,11 +18,15 @@ from typing import Any
 import numpy as np
 
 from analysis import celerity as cel
-from analysis import dissipation, energy, inversion, opening, pulses, regime, theory
+from analysis import dissipation, energy, flutter, inversion, opening, pulses, regime, theory, validity
+from analysis.errors import InputError
 from analysis.io import RunData
+from analysis.edges import slipping_mask
+from analysis.tracking import EdgeTrack, find_edges
+from analysis.xcorr import XcorrResult, celerity_by_xcorr
 
 #: Version of the measurement definitions, written into every metrics file.
-ANALYSIS_VERSION = "2"
+ANALYSIS_VERSION = "3"
 
 #: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
 QUALITY_AGREEMENT = 0.02
@@ -41,15 +49,14 @@ PARAMETERS = {
     "perturbation_amplitude": ("perturbation", "amplitude"), "seed": ("perturbation", "seed"),
     "interface_stride": ("output", "interface_stride"),
 }
-#: Parameters also present as root attributes (used when the config lacks them).
-_ATTRIBUTE_FALLBACK = ("E", "nu", "rho", "H", "f")
 
 
 @dataclass(frozen=True)
 class Settings:
     """Measurement settings (all documented in analysis/README.md).
 
-    threshold_rel: slip-velocity threshold / V0; opening_rel: opening threshold / |Uy|;
+    threshold_rel: slip-velocity threshold / V0 (the opening threshold is the run's own, the one
+    that drives the solver's `stop_after_opening`);
     window_length, major_duration: in seconds of the paper's time unit (E = 1000 Pa,
     rho = 1000 kg/m^3), scaled for each run by its own unit sqrt(rho / E) (`time_unit_ratio`), so
     that runs similar to the paper's up to rho or E are measured over the similar window;
@@ -59,7 +66,6 @@ class Settings:
     """
 
     threshold_rel: float = cel.DEFAULT_THRESHOLD_REL
-    opening_rel: float = opening.DEFAULT_OPENING_REL
     window_length: float = cel.DEFAULT_WINDOW_LENGTH
     major_duration: float = cel.DEFAULT_MAJOR_DURATION
     min_speed_rel: float = 0.1
@@ -70,7 +76,7 @@ class Settings:
     def check(self) -> None:
         """ValueError naming every setting out of range."""
         problems = [f"{name} = {getattr(self, name)} must be > 0" for name in
-                    ("threshold_rel", "opening_rel", "window_length", "major_duration",
+                    ("threshold_rel", "window_length", "major_duration",
                      "min_speed_rel", "onset_rel", "drop_rel", "sensitivity_threshold_factor")
                     if not getattr(self, name) > 0]
         if problems:
@@ -89,30 +95,19 @@ def time_unit_ratio(E: float, rho: float) -> float:
 
 
 def _parameters(run: RunData) -> dict[str, Any]:
+    """The PARAMETERS from the resolved config (which holds every key), then dt, dt_times_cs, t_end."""
     out: dict[str, Any] = {}
     for key, (group, name) in PARAMETERS.items():
-        value = run.config.get(group, {}).get(name) if isinstance(run.config.get(group), dict) else None
-        if value is None and key in _ATTRIBUTE_FALLBACK:
-            value = run.attrs[key]
-        out[key] = value
-    if out["lambda_over_H"] is None:
-        out["lambda_over_H"] = run.attr("lambda") / run.attr("H")
-    if out["elements_per_H"] is None:
-        out["elements_per_H"] = int(round(run.attr("H") / run.attr("h")))
+        section = run.config.get(group)
+        if not isinstance(section, dict) or name not in section:
+            raise InputError(f"{run.path}: the resolved config lacks '{group}.{name}' "
+                             "(malformed run file)")
+        out[key] = section[name]
     out["dt"] = run.attr("dt")
     # The time step in the study's unit (a point parameter, study/sweeps.py), from the dt actually used.
     out["dt_times_cs"] = round(run.attr("dt") * run.attr("c_s"), 9)
     out["t_end"] = run.attr("t_end")
     return out
-
-
-def _preload_displacement(run: RunData, parameters: dict[str, Any]) -> float:
-    """Uy (m): from the config, else from p0 (theory.preload_pressure inverted)."""
-    H = run.attr("H")
-    if parameters.get("Uy_over_H") is not None:
-        return float(parameters["Uy_over_H"]) * H
-    nu, E = run.attr("nu"), run.attr("E")
-    return -run.attr("p0") * H * (1 + nu) * (1 - 2 * nu) / (E * (1 - nu))
 
 
 def _onset_time(t: np.ndarray, v: np.ndarray, state: np.ndarray, speed: float) -> float:
@@ -129,7 +124,7 @@ def _relative(a: float, b: float) -> float:
     return (a - b) / abs(b)
 
 
-def _fronts_at(tracks: list[cel.EdgeTrack], time: float) -> np.ndarray:
+def _fronts_at(tracks: list[EdgeTrack], time: float) -> np.ndarray:
     positions = []
     for track in tracks:
         k = np.flatnonzero(np.isclose(track.t, time, rtol=0, atol=1e-9 * max(1.0, abs(time))))
@@ -155,43 +150,39 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     """
     settings = settings or Settings()
     settings.check()
-    interface, series = run.interface, run.global_series
     parameters = _parameters(run)
-    E, nu, H, f = (run.attr(k) for k in ("E", "nu", "H", "f"))
-    c_s, c_l, V0 = run.attr("c_s"), run.attr("c_l"), run.attr("V0")
-    Uy = _preload_displacement(run, parameters)
-    p0 = run.attr("p0")
+    # A run that blew up is measured on its finite part (validity.finite_part).
+    run = validity.finite_part(run)
+    interface, series = run.interface, run.global_series
+    E, rho, H, f = (run.attr(k) for k in ("E", "rho", "H", "f"))
+    c_s, c_l, V0, p0 = (run.attr(k) for k in ("c_s", "c_l", "V0", "p0"))
     x, t, v = interface.x, interface.t, interface.slip_velocity
+    sampled = validity.sampling(t, H, c_s)
 
     # 1. Onset of slip.
     onset_time = _onset_time(t, v, interface.state, settings.onset_rel * V0)
-    onset_estimate = (math.nan if parameters["preshear_ratio"] is None else theory.onset_time_estimate(
-        f=f, preshear_ratio=float(parameters["preshear_ratio"]), p0=p0, H=H, E=E, nu=nu, V0=V0))
 
     # 2. Slip fronts and celerity (threshold method), then the cross-correlation estimate.
     threshold = settings.threshold_rel * V0
     min_speed = settings.min_speed_rel * c_s
-    front_map = cel.find_edges(x, t, v, threshold)
-    unit = time_unit_ratio(E, float(parameters["rho"]))
+    front_map = find_edges(x, t, v, threshold)
+    unit = time_unit_ratio(E, rho)
     window_length, major_duration = settings.window_length * unit, settings.major_duration * unit
     kw = dict(min_speed=min_speed, window_length=window_length, major_duration=major_duration)
     result = cel.celerity_from_fronts(front_map, **kw)
     c_p = result.celerity
-    xcorr = (cel.celerity_by_xcorr(x, t, v, result.window) if result.window is not None
-             else cel.XcorrResult(math.nan))
+    xcorr = (celerity_by_xcorr(x, t, v, result.window) if result.window is not None
+             else XcorrResult(math.nan))
 
-    # 3. Opening.
-    open_threshold = opening.opening_threshold(Uy, settings.opening_rel)
+    # 3. Opening, above the solver's threshold (the one of stop_after_opening).
+    open_threshold = run.attr("opening_threshold")
     opened = opening.summarize_opening(x, t, interface.opening, open_threshold)
     behind = inside_slip = None
-    major_same_direction = [track for track, direction in
-                            cel.major_fronts(front_map, min_speed=min_speed,
-                                             major_duration=major_duration)
-                            if direction == result.direction != 0]
+    major_same_direction = result.major_in_direction()
     if opened.opened:
         k = int(np.flatnonzero(t == opened.t_first)[0])
         i = int(np.argmin(np.abs(x - opened.x_first)))
-        inside_slip = bool(cel.slipping_mask(v[k], threshold)[i])
+        inside_slip = bool(slipping_mask(v[k], threshold)[i])
         behind = opening.distance_behind_front(opened.x_first,
                                                _fronts_at(major_same_direction, opened.t_first),
                                                result.direction, front_map.grid.period)
@@ -201,7 +192,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     if opened.opened and result.reason == "ok":
         c_opening_window = cel.celerity_from_fronts(front_map, window_start=opened.t_first, **kw).celerity
     high = cel.celerity_from_fronts(
-        cel.find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
+        find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
 
     # 5. T/N: minimum, inversion, frictional drops.
     ratio = inversion.bridge_undefined(series.t, series.T_over_N)
@@ -209,8 +200,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     # Averaged over a shear round trip 2H/c_s: after a drop the layer rings at that period and its
     # harmonics (long run at nu=0.2, f=1.5: 77.6 s = 2.0 H/c_s), which a shorter average leaves as
     # spurious drops of ~0.2.
-    drops = inversion.frictional_drops(series.t, ratio, settings.drop_rel * f,
-                                       smooth_time=2 * H / c_s)
+    # Without friction (f = 0) T/N is round-off: no drop, no inversion (module docstring).
+    drops = (inversion.frictional_drops(series.t, ratio, settings.drop_rel * f, smooth_time=2 * H / c_s)
+             if f > 0 else [])
     first = drops[0] if drops else None
     later_starts = [d.T_over_N_start for d in drops[1:]]
 
@@ -232,7 +224,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     before = dissipation.window_dissipation(
         t0=onset_time, t1=opened.t_first if opened.opened else t_last, **window)
     spacing_theory = theory.pulse_spacing(c_p, c_s, H)
-    inverted = bool(min_ratio < 0)
+    inverted = bool(min_ratio < 0) and f > 0
     balance_error, residual_max = energy.energy_balance_error(
         series.energy_kinetic, series.energy_elastic, series.work_external,
         series.dissipation_friction, series.energy_balance_residual)
@@ -250,14 +242,20 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
             ("short_window", result.window[1] - result.window[0] < 0.5 * window_length),
         ) if bad]
         quality = ";".join(concerns) or "ok"
+    unphysical = validity.non_physical_reason(run, opened.max_opening)
 
     metrics: dict[str, Any] = {
         "source": run.path,
         "analysis_version": ANALYSIS_VERSION,
         "slidewave_version": run.attrs.get("slidewave_version"),
         "git_commit": run.attrs.get("git_commit"),
-        "run_complete": bool(run.attrs.get("complete")),
-        "end_reason": run.attrs.get("end_reason"),
+        "complete": run.complete,
+        "run_complete": run.complete,  # former name of "complete" (study/scripts/report.py)
+        "end_reason": run.end_reason,
+        "non_physical": unphysical is not None,
+        "non_physical_reason": unphysical,
+        "sampling_too_coarse": sampled.too_coarse,
+        "output_frames_per_round_trip": sampled.frames_per_round_trip,
         **parameters,
         "c_s": c_s, "c_l": c_l, "sqrt2_c_s": math.sqrt(2.0) * c_s, "p0": p0, "V0": V0,
         "lambda": front_map.grid.period, "dx": front_map.grid.dx,
@@ -265,8 +263,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "slip_threshold": threshold, "threshold_rel": settings.threshold_rel,
         "window_length": window_length, "major_duration": major_duration,
         "onset_time": onset_time,
-        "onset_time_estimate": onset_estimate,
+        "onset_time_estimate": run.attr("t_onset_estimate"),
         "celerity": c_p,
+        "celerity_over_cs": c_p / c_s,
         "celerity_reason": result.reason,
         "celerity_window": list(result.window) if result.window else None,
         "celerity_window_start": result.window[0] if result.window else math.nan,
@@ -292,6 +291,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "celerity_threshold_sensitivity": _relative(high.celerity, c_p),
         "regime": regime.regime(c_p, c_s, c_l),
         "below_sqrt2_cs": regime.below_sqrt2_cs(c_p, c_s),
+        "intersonic_below_sqrt2_cs": regime.intersonic_below_sqrt2_cs(c_p, c_s),
         "opening": opened.opened,
         "max_opening": opened.max_opening,
         "max_opening_time": opened.t_max,
@@ -314,9 +314,14 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "later_drops_start_T_over_N_median": (float(np.median(later_starts)) if later_starts
                                               else math.nan),
         "n_complete_drops": sum(d.complete for d in drops),
+        "first_drop_start_after_onset": (first.t_start - onset_time) if first else math.nan,
+        "first_drop_duration": (first.t_bottom - first.t_start) if first else math.nan,
+        "inside_flutter_wedge": flutter.inside_wedge(run.attr("nu"), f),
         "category": regime.category(slipped=front_map.n_slipping_frames > 0,
                                     has_front=front_map.n_edge_frames > 0, opened=opened.opened,
-                                    celerity=c_p, c_s=c_s, c_l=c_l, inversion=inverted),
+                                    celerity=c_p, c_s=c_s, c_l=c_l, inversion=inverted,
+                                    non_physical=unphysical is not None,
+                                    sampling_too_coarse=sampled.too_coarse),
         "pulse_count": major.count if major_field else None,
         "pulse_spacing": major.spacing,
         "pulse_count_field": major_field,
@@ -325,6 +330,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "pulse_count_all": count_all,
         "pulse_spacing_all": spacing_all,
         "pulse_spacing_theory": spacing_theory,
+        "pulse_spacing_theory_over_H": spacing_theory / H,
         "pulse_count_theory": pulses.expected_pulse_count(front_map.grid.period, spacing_theory),
         "dissipative_friction_opening": during.mu_diss,
         "friction_work_ratio_opening": during.work_fraction,

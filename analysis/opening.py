@@ -1,12 +1,12 @@
 """Opening of the interface (u_y > 0): whether, how much, where and when it first occurs.
 
-Threshold: the interface counts as open where u_y > rel |Uy| with rel = 1e-2 by default, i.e.
-1e-5 H at the default preload Uy = -1e-3 H (0.25 mm at H = 25 m). Closed nodes carry round-off
-(~1e-13 m in the solver); opening waves open by 0.6 mm to 15 cm (all 36 opening cells of the H/32
-Table-1 sweep). Between the two, nu = 0.2, f = 0.8 shows one transient lift-off of 4e-5 m
-(0.16 % of |Uy|, three output frames) during its frictional drop and no travelling opening; the
-1 % criterion calls that "no opening wave", and `max_opening` keeps the number so that the choice
-stays visible (the solver's `stop_after_opening` uses the same 1 % of |Uy|).
+Threshold: the run's own `opening_threshold` (a `/setup` attribute: 1 % of the preload displacement
+|Uy|, the one that drives the solver's `stop_after_opening`), i.e. 1e-5 H at the default preload
+Uy = -1e-3 H (0.25 mm at H = 25 m). Closed nodes carry round-off (~1e-13 m in the solver); opening
+waves open by 0.6 mm to 15 cm (all 36 opening cells of the H/32 Table-1 sweep). Between the two,
+nu = 0.2, f = 0.8 shows one transient lift-off of 4e-5 m (0.16 % of |Uy|, three output frames)
+during its frictional drop and no travelling opening; the 1 % criterion calls that "no opening
+wave", and `max_opening` keeps the number so that the choice stays visible.
 """
 
 from __future__ import annotations
@@ -15,14 +15,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-
-#: Opening threshold relative to the preload displacement |Uy| (dimensionless).
-DEFAULT_OPENING_REL = 1e-2
-
-
-def opening_threshold(Uy: float, rel: float = DEFAULT_OPENING_REL) -> float:
-    """Opening threshold rel |Uy| (m), Uy = the stage-1 top displacement (m)."""
-    return rel * abs(Uy)
 
 
 @dataclass(frozen=True)

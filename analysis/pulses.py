@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from analysis.celerity import EdgeTrack, PeriodicGrid, slipping_mask
+from analysis.edges import PeriodicGrid, slipping_mask
+from analysis.tracking import EdgeTrack
 
 #: A pulse is major when its accumulated opening reaches this fraction of the largest.
 DEFAULT_MAJOR_FRACTION = 0.5

@@ -12,7 +12,14 @@ Regime from |c_p|: subsonic (|c_p| < c_s), intersonic (c_s <= |c_p| <= c_l), sup
   (diamonds; inversion is reported separately);
 - the honest others: ``supersonic_forward_opening`` (e.g. the paper's nu = 0, f = 2),
   ``intersonic_backward_opening``, ``subsonic_forward_opening``, ``subsonic_backward_opening``,
-  and ``opening_without_front`` (opens, but no front could be measured).
+  and ``opening_without_front`` (opens, but no front could be measured);
+- ``non_physical``: the run reached a state outside the model (non-finite values, an opening
+  larger than H; `analysis.validity`), whatever it shows otherwise;
+- ``sampling_too_coarse``: the interface output is too sparse to see fronts (fewer than
+  `validity.MIN_FRAMES_PER_ROUND_TRIP` frames per shear round trip 2H/c_s): "no slip" or "no
+  opening" from such a run would mean nothing.
+
+Neither of the last two enters Table 1.
 """
 
 from __future__ import annotations
@@ -23,6 +30,7 @@ CATEGORIES = (
     "no_slip", "uniform_slip", "no_opening", "intersonic_opening", "intersonic_opening_inversion",
     "supersonic_backward_opening", "supersonic_forward_opening", "intersonic_backward_opening",
     "subsonic_forward_opening", "subsonic_backward_opening", "opening_without_front",
+    "non_physical", "sampling_too_coarse",
 )
 
 
@@ -45,8 +53,17 @@ def below_sqrt2_cs(celerity: float, c_s: float) -> bool | None:
     return abs(celerity) < math.sqrt(2.0) * c_s
 
 
+def intersonic_below_sqrt2_cs(celerity: float, c_s: float) -> bool | None:
+    """c_s <= |celerity| < sqrt(2) c_s: intersonic and in the range favourable to opening; None if
+    nan."""
+    if celerity is None or not math.isfinite(celerity):
+        return None
+    return c_s <= abs(celerity) < math.sqrt(2.0) * c_s
+
+
 def category(*, slipped: bool, has_front: bool, opened: bool, celerity: float, c_s: float,
-             c_l: float, inversion: bool) -> str:
+             c_l: float, inversion: bool, non_physical: bool = False,
+             sampling_too_coarse: bool = False) -> str:
     """Phase-diagram category (see the module docstring).
 
     Parameters
@@ -63,7 +80,13 @@ def category(*, slipped: bool, has_front: bool, opened: bool, celerity: float, c
         Wave speeds (m/s).
     inversion
         min T/N < 0.
+    non_physical, sampling_too_coarse
+        The run left the model / its output cannot show fronts: these win, in this order.
     """
+    if non_physical:
+        return "non_physical"
+    if sampling_too_coarse:
+        return "sampling_too_coarse"
     if not opened:
         if not slipped:
             return "no_slip"

@@ -1,7 +1,12 @@
-"""Closed-form quantities of the model: wave speeds, preload, onset time, pulse spacing.
+"""Closed-form quantities of the model: wave speeds, preload, time step, onset time, pulse spacing.
 
 Plane strain, linear isotropic elasticity (Young's modulus E, Poisson's ratio nu, density rho);
 the paper is Yastrebov 2016 (Tribol. Lett. 62:1). The flutter boundary lives in `analysis.flutter`.
+
+This is the one Python home of the formulas needed *before* a run exists (planning a study: run
+length, resources; the published cells of Table 1). Once a run exists its constants are read from
+the run (`/setup`: c_s, c_l, p0, dt, t_onset_estimate, opening_threshold), never recomputed;
+tests/analysis/test_theory.py checks that these formulas give what the solver writes.
 """
 
 from __future__ import annotations
@@ -48,6 +53,12 @@ def preload_pressure(Uy: float, E: float, nu: float, H: float) -> float:
     compression positive.
     """
     return -Uy * E * (1.0 - nu) / (H * (1.0 + nu) * (1.0 - 2.0 * nu))
+
+
+def time_step(c_s: float, dt_times_cs: float, dt: float | None = None) -> float:
+    """Time step (s): `time.dt` when given, else dt_times_cs / c_s (dt_times_cs in m: the distance a
+    shear wave travels in one step)."""
+    return dt if dt is not None else dt_times_cs / c_s
 
 
 def onset_time_estimate(*, f: float, preshear_ratio: float, p0: float, H: float, E: float,

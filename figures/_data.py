@@ -7,7 +7,6 @@ one reader, which checks `format_version` first; the bulk snapshots, which it do
 read here after that check. Every problem with an input is an `InputError` (or the analysis
 package's `AnalysisError`) whose message names the file and what is wrong.
 """
-import csv
 import json
 import math
 import sys
@@ -20,9 +19,10 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 from analysis.errors import AnalysisError  # noqa: E402
 from analysis.io import load_run  # noqa: E402
+from analysis.table_csv import parse_cell, read_table  # noqa: E402
 
 __all__ = ["AnalysisError", "InputError", "Run", "open_run", "read_csv", "read_flutter",
-           "read_json", "select", "wave_speeds"]
+           "read_json", "select"]
 
 
 class InputError(Exception):
@@ -101,33 +101,10 @@ def read_json(path):
         raise InputError(f"{path}: not valid JSON ({err})") from None
 
 
-def _value(text):
-    """CSV cell -> float, bool or str ('' and 'nan' become nan)."""
-    text = text.strip()
-    low = text.lower()
-    if low in ("", "nan", "none", "null", "na"):
-        return math.nan
-    if low in ("true", "false"):
-        return low == "true"
-    try:
-        return float(text)
-    except ValueError:
-        return text
-
-
 def read_csv(path, required):
-    """Rows of a CSV as dicts of parsed values; InputError naming any missing required column."""
-    try:
-        with open(path, newline="") as stream:
-            reader = csv.DictReader(stream)
-            columns = reader.fieldnames or []
-            rows = [{k: _value(v or "") for k, v in row.items() if k is not None} for row in reader]
-    except OSError as err:
-        raise InputError(f"{path}: cannot read ({err.strerror})") from None
-    missing = [c for c in required if c not in columns]
-    if missing:
-        raise InputError(f"{path}: missing required column(s) {', '.join(missing)} "
-                         f"(has: {', '.join(columns) or 'none'})")
+    """Rows of a table of `analysis aggregate` as dicts of parsed values (analysis.table_csv); an
+    AnalysisError names any missing required column, an InputError a table without rows."""
+    rows = read_table(path, required)
     if not rows:
         raise InputError(f"{path}: no data rows")
     return rows
@@ -139,7 +116,7 @@ def select(rows, where, path="input"):
         if "=" not in condition:
             raise InputError(f"--where expects column=value, got '{condition}'")
         key, wanted = (s.strip() for s in condition.split("=", 1))
-        wanted = _value(wanted)
+        wanted = parse_cell(wanted)
         if rows and key not in rows[0]:
             raise InputError(f"{path}: --where column '{key}' does not exist")
         rows = [r for r in rows if _same(r[key], wanted)]
@@ -176,12 +153,3 @@ def read_flutter(path):
     if not points:
         raise InputError(f"{path}: no 'nu f_lower f_upper' line")
     return np.array(sorted(points))
-
-
-def wave_speeds(nu, E=1000.0, rho=1000.0):
-    """(c_s, c_l) in m/s for plane strain: c_s = sqrt(E/(2(1+nu)rho)),
-    c_l = sqrt(E(1-nu)/((1+nu)(1-2nu)rho)). Only for theory lines when no column carries them."""
-    nu = np.asarray(nu, dtype=float)
-    c_s = np.sqrt(E / (2.0 * (1.0 + nu) * rho))
-    c_l = np.sqrt(E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu) * rho))
-    return c_s, c_l

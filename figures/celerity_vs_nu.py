@@ -7,8 +7,8 @@ Reads the columns nu, f, celerity (regenerated, m/s, signed: + = sliding directi
 (the paper's Table 1, m/s) of table1.csv; empty cells are skipped. Filled circles: regenerated;
 open circles: published; a thin line joins the two values of one cell. The upper panel shows the
 fronts running in the sliding direction, the lower one those running against it (mirrored wave
-speeds -c_s, -sqrt2 c_s, -c_l). Theory curves for E and rho (default 1000 Pa, 1000 kg/m^3, the
-paper's values) unless the table carries c_s and c_l columns.
+speeds -c_s, -sqrt2 c_s, -c_l). The wave-speed curves are analysis.theory's, for the paper's E and
+rho (1000 Pa, 1000 kg/m^3; --E, --rho).
 """
 import argparse
 import math
@@ -18,7 +18,8 @@ from matplotlib.colors import BoundaryNorm
 from matplotlib.lines import Line2D
 
 import _style
-from _data import InputError, read_csv, select, wave_speeds
+from _data import InputError, read_csv, select
+from analysis import theory
 
 REQUIRED = ("nu", "f", "celerity", "published")
 
@@ -26,8 +27,8 @@ REQUIRED = ("nu", "f", "celerity", "published")
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("table", help="table1.csv with nu, f, celerity, published")
-    parser.add_argument("--E", type=float, default=1000.0, help="Young's modulus of the theory curves (Pa)")
-    parser.add_argument("--rho", type=float, default=1000.0, help="density of the theory curves (kg/m^3)")
+    parser.add_argument("--E", type=float, default=theory.TABLE1_E, help="Young's modulus of the theory curves (Pa)")
+    parser.add_argument("--rho", type=float, default=theory.TABLE1_RHO, help="density of the theory curves (kg/m^3)")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
@@ -60,9 +61,8 @@ def main(argv=None):
     fig, (up, down) = _style.plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True,
                                           gridspec_kw=dict(height_ratios=[3, 2], hspace=0.08))
     nu = np.linspace(0.0, max(0.495, max(r["nu"] for r in rows)), 300)
-    c_s, c_l = wave_speeds(nu, args.E, args.rho)
-    theory = {"c_l": c_l, "c_s": c_s, "sqrt2_c_s": math.sqrt(2.0) * c_s}
-    for key, values in theory.items():
+    c_s, sqrt2_c_s, c_l = np.array([theory.wave_speeds(x, args.E, args.rho) for x in nu]).T
+    for key, values in {"c_l": c_l, "c_s": c_s, "sqrt2_c_s": sqrt2_c_s}.items():
         style = dict(_style.THEORY_STYLE[key])
         up.plot(nu, values, lw=1.2, **style)
         style["label"] = "$-$" + style["label"]

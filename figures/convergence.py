@@ -7,15 +7,14 @@
 
 Runs that agree on every other run parameter (nu, f, V0_over_cs, lambda_over_H, elements_per_H,
 rho, integration, where present) form one line; lines with fewer than two values of the parameter
-are left out. The celerity is shown as c_p/c_s, which stays comparable when rho changes c_s; c_s
-comes from a `c_s` column, else from nu and rho with E = 1000 Pa (the paper's; --E). Reference
-lines at c_p/c_s = 1 and sqrt 2.
+are left out. The celerity is shown as c_p/c_s (column celerity_over_cs, which `analysis aggregate`
+derives), comparable when rho changes c_s. Reference lines at c_p/c_s = 1 and sqrt 2.
 """
 import argparse
 import math
 
 import _style
-from _data import InputError, read_csv, select, wave_speeds
+from _data import InputError, read_csv, select
 
 PARAMS = {  # axis label, x scale, title
     "elements_per_H": ("elements per layer height $H/h$ (-)", "log2", "Mesh convergence"),
@@ -24,7 +23,7 @@ PARAMS = {  # axis label, x scale, title
     "V0_over_cs": ("top shear velocity $V_0/c_s$ (-)", "log", "Dependence on the shear rate"),
     "dt_times_cs": ("time step $\\Delta t\\, c_s$ (m)", "log2", "Dependence on the time step"),
 }
-REQUIRED = ("nu", "f", "celerity", "min_T_over_N", "max_opening")
+REQUIRED = ("nu", "f", "celerity_over_cs", "min_T_over_N", "max_opening")
 RUN_PARAMETERS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration", "dt_times_cs")
 COLORS = ["tab:red", "tab:blue", "tab:green", "tab:purple", "tab:orange", "tab:brown", "tab:olive"]
 
@@ -33,7 +32,6 @@ def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("metrics", help="all_metrics.csv (one row per run)")
     parser.add_argument("--param", required=True, choices=sorted(PARAMS))
-    parser.add_argument("--E", type=float, default=1000.0, help="Young's modulus when no c_s column (Pa)")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
@@ -56,9 +54,6 @@ def main(argv=None):
     fixed = [c for c in RUN_PARAMETERS if c != args.param and c in rows[0]]
     lines = {}
     for r in rows:
-        if "c_s" not in r or not (isinstance(r["c_s"], float) and math.isfinite(r["c_s"])):
-            rho = r.get("rho", 1000.0)
-            r["c_s"] = float(wave_speeds(r["nu"], args.E, rho)[0])
         lines.setdefault(tuple(r[c] for c in fixed), []).append(r)
     lines = {k: sorted(v, key=lambda r: r[args.param]) for k, v in lines.items()
              if len({r[args.param] for r in v}) > 1}
@@ -78,7 +73,7 @@ def main(argv=None):
         color = COLORS[k % len(COLORS)]
         label = line_label([key[i] for i in varying], [fixed[i] for i in varying]) or None
         x = [r[args.param] for r in runs]
-        axes[0].plot(x, [r["celerity"] / r["c_s"] for r in runs], "o-", color=color, label=label)
+        axes[0].plot(x, [r["celerity_over_cs"] for r in runs], "o-", color=color, label=label)
         axes[1].plot(x, [r["min_T_over_N"] for r in runs], "o-", color=color, label=label)
         axes[2].plot(x, [r["max_opening"] for r in runs], "o-", color=color, label=label)
     for level, text in ((1.0, "$c_s$"), (math.sqrt(2.0), "$\\sqrt{2}\\,c_s$")):

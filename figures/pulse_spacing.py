@@ -6,28 +6,24 @@
 
 Measured (filled): pulse_count and pulse_spacing (m) of each run. Predicted (open, dashed): the
 Mach-wave spacing l = 2H sqrt(c_p^2/c_s^2 - 1) from each run's measured celerity c_p, and the
-count lambda/l it implies; undefined (not drawn) when |c_p| <= c_s. Gray lines: the spacings
-lambda/n a periodic layer allows. c_s comes from a `c_s` column, else from nu with E = rho = 1000
-(the paper's values; --E, --rho); H from an `H` column, else --H (default 25 m).
+pulse count it implies (metrics pulse_spacing_theory and pulse_count_theory of `analysis measure`;
+undefined, not drawn, when |c_p| <= c_s). Gray lines: the spacings lambda/n a periodic layer allows.
 """
 import argparse
 
 import numpy as np
 
 import _style
-from _data import read_csv, select, wave_speeds
+from _data import read_csv, select
 
-REQUIRED = ("nu", "f", "lambda_over_H", "celerity", "pulse_count", "pulse_spacing")
+REQUIRED = ("nu", "f", "lambda_over_H", "H", "pulse_count", "pulse_spacing", "pulse_spacing_theory",
+            "pulse_count_theory")
 COLORS = ["tab:red", "tab:blue", "tab:green", "tab:purple", "tab:orange", "tab:brown"]
 
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("metrics", help="all_metrics.csv (one row per run)")
-    parser.add_argument("--H", type=float, default=25.0, help="layer height when no H column (m)")
-    parser.add_argument("--E", type=float, default=1000.0, help="Young's modulus when no c_s column (Pa)")
-    parser.add_argument("--rho", type=float, default=1000.0,
-                        help="density when neither c_s nor rho columns (kg/m^3)")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
@@ -39,13 +35,6 @@ def main(argv=None):
     args = parse_args(argv)
     rows = select(read_csv(args.metrics, REQUIRED), args.where, args.metrics)
     rows.sort(key=lambda r: r["lambda_over_H"])
-    for r in rows:
-        if "c_s" not in r or not np.isfinite(r["c_s"]):
-            rho = r.get("rho", args.rho)
-            r["c_s"] = float(wave_speeds(r["nu"], args.E, rho if np.isfinite(rho) else args.rho)[0])
-        r["H"] = r["H"] if isinstance(r.get("H"), float) and np.isfinite(r["H"]) else args.H
-        ratio = (r["celerity"] / r["c_s"]) ** 2 - 1.0
-        r["l_over_H"] = 2.0 * np.sqrt(ratio) if ratio > 0 else np.nan
     groups = {}
     for r in rows:
         groups.setdefault((r["nu"], r["f"]), []).append(r)
@@ -64,11 +53,11 @@ def main(argv=None):
         color = COLORS[k % len(COLORS)]
         x = [r["lambda_over_H"] for r in group]
         label = f"$\\nu$ = {nu:g}, $f$ = {f:g}"
-        predicted_l = np.array([r["l_over_H"] for r in group])
+        predicted_l = np.array([r["pulse_spacing_theory"] / r["H"] for r in group])  # in units of H
         ax_n.plot(x, [r["pulse_count"] for r in group], "o", color=color, ms=7,
                   label=f"{label}: measured")
-        ax_n.plot(x, np.array(x) / predicted_l, "s--", mfc="none", color=color, ms=7, lw=0.9,
-                  label="$\\lambda/l$, $l = 2H\\sqrt{c_p^2/c_s^2-1}$")
+        ax_n.plot(x, [r["pulse_count_theory"] for r in group], "s--", mfc="none", color=color, ms=7,
+                  lw=0.9, label="$\\lambda/l$ rounded, $l = 2H\\sqrt{c_p^2/c_s^2-1}$")
         ax_l.plot(x, [r["pulse_spacing"] / r["H"] for r in group], "o", color=color, ms=7,
                   label=f"{label}: measured")
         ax_l.plot(x, predicted_l, "s--", mfc="none", color=color, ms=7, lw=0.9,

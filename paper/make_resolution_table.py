@@ -3,14 +3,16 @@
 
     paper/make_resolution_table.py 'H/32=results/table1_h32/table/table1.csv' \\
         'H/64=results/table1/table/table1.csv' 'H/128=results/table1_h128/table/table1.csv' \\
-        -o generated/resolution.tex [--tolerance 0.05]
+        -o generated/resolution.tex
 
 Each input is LABEL=table1.csv of one sweep (`python3 -m analysis aggregate`: nu, f, celerity,
-published, regime_match, category). Rows are the published cells that the *last* input ran (the
-subset run at the finest mesh); a value within the tolerance of the published one is set in bold, a wrong
-sign gets a dagger, a wrong regime a double dagger. The closing rows count, over these cells, the
-values within the tolerance and the right signs and regimes, and give the median |deviation| per
-mesh: the subset's score at each resolution, so that refinement can be judged on the same cells.
+published, deviation_rel, within_tol, sign_match, regime_match, category). Rows are the published
+cells that the *last* input ran (the subset run at the finest mesh); a value within the tolerance of
+the published one (within_tol) is set in bold, a wrong sign gets a dagger, a wrong regime a double
+dagger. The closing rows give, over these cells, the subset's score at each resolution
+(`analysis.aggregate.summarize`: values within the tolerance, right signs and regimes, median
+|deviation|), so that refinement can be judged on the same cells. The tolerance is the tables' own
+(all inputs must agree).
 """
 
 from __future__ import annotations
@@ -22,8 +24,10 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_numbers import InputError, read_rows  # noqa: E402
-from table_io import labelled_paths, write_atomically  # noqa: E402
+from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
+from analysis.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
+
+REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match")
 
 
 def finite(value) -> bool:
@@ -34,25 +38,24 @@ def key(row: dict) -> tuple[float, float]:
     return round(row["nu"], 6), round(row["f"], 6)
 
 
-def value_cell(row: dict | None, tolerance: float) -> str:
+def value_cell(row: dict | None) -> str:
     if row is None or not finite(row.get("celerity")):
         return "--"
     text = f"{row['celerity']:.3f}"
-    if abs(row["celerity"] - row["published"]) <= tolerance * abs(row["published"]):
+    if row["within_tol"] is True:
         text = rf"\mathbf{{{text}}}"
-    marks = ("" if math.copysign(1, row["celerity"]) == math.copysign(1, row["published"]) else r"\dagger") + \
-            ("" if row.get("regime_match") is not False else r"\ddagger")
+    marks = ("" if row["sign_match"] is not False else r"\dagger") + \
+            ("" if row["regime_match"] is not False else r"\ddagger")
     return f"${text}^{{{marks}}}$" if marks else f"${text}$"
 
 
 def score(rows: list[dict | None], tolerance: float) -> tuple[int, int, int, str]:
+    """(within, signs, regimes, median |deviation| in % or '--') of the measured rows."""
     measured = [r for r in rows if r is not None and finite(r.get("celerity"))]
-    within = sum(abs(r["celerity"] - r["published"]) <= tolerance * abs(r["published"]) for r in measured)
-    signs = sum(math.copysign(1, r["celerity"]) == math.copysign(1, r["published"]) for r in measured)
-    regimes = sum(r.get("regime_match") is not False for r in measured)
-    deviations = [abs(r["celerity"] - r["published"]) / abs(r["published"]) for r in measured]
-    median = f"{100 * statistics.median(deviations):.1f}" if deviations else "--"
-    return within, signs, regimes, median
+    summary = summarize(measured, tolerance)
+    median = summary["median_abs_deviation"]
+    return (summary["within_tolerance"], summary["sign_matches"], summary["regime_matches"],
+            "--" if median is None else f"{100 * median:.1f}")
 
 
 def render(sets: list[tuple[str, dict]], tolerance: float) -> str:
@@ -68,7 +71,7 @@ def render(sets: list[tuple[str, dict]], tolerance: float) -> str:
     for cell in cells:
         published = finest[cell]["published"]
         lines.append(" & ".join([f"${cell[0]:.2f}$", f"${cell[1]:.2f}$", f"${published:.3f}$"]
-                                + [value_cell(rows.get(cell), tolerance) for _, rows in sets]) + r" \\")
+                                + [value_cell(rows.get(cell)) for _, rows in sets]) + r" \\")
     scores = [score([rows.get(c) for c in cells], tolerance) for _, rows in sets]
     lines.append(r"\midrule")
     for title, index in ((rf"within {100 * tolerance:g}\,\%", 0), ("right sign", 1), ("right regime", 2),
@@ -82,11 +85,12 @@ def render(sets: list[tuple[str, dict]], tolerance: float) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("inputs", nargs="+", metavar="LABEL=TABLE1_CSV")
-    parser.add_argument("--tolerance", type=float, default=0.05)
+    parser.add_argument("--tolerance", type=float, required=True,
+                        help="the tolerance the tables were made with (the heading; must agree with within_tol)")
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args(argv)
     try:
-        sets = [(label, {key(r): r for r in read_rows(path, ("nu", "f", "celerity", "published"))})
+        sets = [(label, {key(r): r for r in read_rows(path, REQUIRED)})
                 for label, path in labelled_paths(args.inputs, "TABLE1_CSV")]
     except (InputError, ValueError) as error:
         print(f"make_resolution_table.py: error: {error}", file=sys.stderr)

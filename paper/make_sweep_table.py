@@ -8,21 +8,20 @@ Each input is LABEL=all_metrics.csv (one row per run, written by `python3 -m ana
 with more than one input a first column `set` holds the label. Rows keep the input order and, within
 an input, are sorted by the listed parameter columns (COLUMNS entries of kind 'param'). Column
 headings and number formats come from COLUMNS, so that every table of the report spells a quantity
-the same way; an empty or non-finite value prints as a dash. Only selection and formatting happen
-here: every number comes from the inputs.
+the same way; an empty or non-finite value prints as a dash, a missing column is an error. Only
+selection and formatting happen here: every number, derived ones included (celerity_over_cs,
+first_drop_start_after_onset, first_drop_duration), comes from the inputs.
 """
 
 from __future__ import annotations
 
 import argparse
-import csv
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_numbers import parse  # noqa: E402
-from table_io import labelled_paths, write_atomically  # noqa: E402
+from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
 
 #: column -> (heading, kind, format): kind 'param' sorts rows; format is a str.format spec or
 #: 'text' / 'yesno' / 'label' (underscores become spaces).
@@ -63,18 +62,6 @@ COLUMNS = {
 }
 
 
-def derived(row: dict) -> dict:
-    """Columns computed from others: c_p/c_s, the first drop's start after the slip onset and its
-    duration."""
-    def number(key):
-        value = row.get(key)
-        return value if isinstance(value, float) and math.isfinite(value) else math.nan
-    return {**row,
-            "celerity_over_cs": number("celerity") / number("c_s"),
-            "first_drop_start_after_onset": number("first_drop_start_time") - number("onset_time"),
-            "first_drop_duration": number("first_drop_bottom_time") - number("first_drop_start_time")}
-
-
 def cell(value, fmt: str) -> str:
     if isinstance(value, bool):
         return "yes" if value else "no"
@@ -91,9 +78,10 @@ def cell(value, fmt: str) -> str:
     return f"${text}$"
 
 
-def read(path: str) -> list[dict]:
-    with open(path, newline="") as stream:
-        return [derived({k: parse(v) for k, v in row.items() if k}) for row in csv.DictReader(stream)]
+def read(path: str, columns: list[str]) -> list[dict]:
+    """The rows of one all_metrics.csv; InputError when it lacks a column of the table (derived columns
+    such as celerity_over_cs come from `analysis aggregate`: rerun it for an older table)."""
+    return read_rows(path, columns)
 
 
 def table(sets: list[tuple[str, list[dict]]], columns: list[str]) -> str:
@@ -120,8 +108,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args(argv)
     try:
-        sets = [(label, read(path)) for label, path in labelled_paths(args.inputs, "ALL_METRICS_CSV")]
-    except ValueError as error:
+        sets = [(label, read(path, args.columns)) for label, path in labelled_paths(args.inputs, "ALL_METRICS_CSV")]
+    except (ValueError, InputError) as error:
         print(f"make_sweep_table.py: error: {error}", file=sys.stderr)
         return 2
     except OSError as error:

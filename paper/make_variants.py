@@ -30,20 +30,28 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("variants", nargs="+", metavar="LABEL=SUMMARY_JSON")
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args(argv)
-    lines = [r"\begin{tabular}{lrrrrr}", r"\toprule",
-             r"variant & measured & signs & regimes & within 5\,\% & median dev. \\", r"\midrule"]
     try:
         pairs = labelled_paths(args.variants, "SUMMARY_JSON")
     except ValueError as error:
         print(f"make_variants.py: error: {error}", file=sys.stderr)
         return 2
+    rows, tolerances = [], set()
     for label, path in pairs:
         try:
             with open(path) as stream:
-                lines.append(row(label.replace("_", r"\_"), json.load(stream)))
+                summary = json.load(stream)
+            rows.append(row(label.replace("_", r"\_"), summary))
+            tolerances.add(summary["tolerance"])
         except (OSError, KeyError, ValueError) as error:
             print(f"make_variants.py: error: {path}: {error}", file=sys.stderr)
             return 2
+    if len(tolerances) != 1:
+        print(f"make_variants.py: error: the summaries were made with different tolerances {sorted(tolerances)}",
+              file=sys.stderr)
+        return 2
+    lines = [r"\begin{tabular}{lrrrrr}", r"\toprule",
+             rf"variant & measured & signs & regimes & within {100 * tolerances.pop():g}\,\% & median dev. \\",
+             r"\midrule", *rows]
     lines += [r"\bottomrule", r"\end{tabular}", ""]
     write_atomically(args.output, "\n".join(lines))
     return 0

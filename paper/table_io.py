@@ -1,9 +1,16 @@
-"""Shared by the table scripts of paper/: LABEL=PATH arguments and atomic writes."""
+"""Shared by the scripts of paper/: reading the study's CSV tables, LABEL=PATH arguments and atomic
+writes."""
 
 from __future__ import annotations
 
 import os
+import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# The paper scripts read the study's tables with the analysis package's reader, and report its error.
+from analysis.errors import InputError  # noqa: E402,F401
+from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
 
 
 def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
@@ -20,10 +27,26 @@ def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
     return pairs
 
 
+def current_umask() -> int:
+    """The process's file-mode creation mask (reading it means setting it: set it straight back)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
 def write_atomically(path: str, text: str) -> None:
-    """Write `text` to `path` through a temporary file and a rename: never a partial file."""
+    """Write `text` to `path` through a temporary file and a rename: never a partial file.
+
+    The file gets the mode of any other new file (0666 less the umask), not the temporary file's
+    0600, which the rename would keep: colleagues sharing the project folder can read the tables.
+    """
     directory = os.path.dirname(os.path.abspath(path))
     os.makedirs(directory, exist_ok=True)
     with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
-        out.write(text)
+        try:
+            out.write(text)
+            os.chmod(out.name, 0o666 & ~current_umask())
+        except BaseException:
+            os.unlink(out.name)
+            raise
     os.replace(out.name, path)

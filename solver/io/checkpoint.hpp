@@ -19,7 +19,7 @@ struct Checkpoint {
   std::string config_json;  ///< resolved configuration of the run (RunConfig::to_json().dump())
   std::string build;        ///< current_build() of the solver that wrote it
   StreamPosition stream;    ///< what RUN.partial.h5 holds at this state
-  LoopState state;          ///< the loop's evolving state (model/run_observer.hpp)
+  StateArrays state;        ///< the loop's evolving state (model/loop_state_arrays.hpp)
 };
 
 /// RUN.h5 -> RUN.checkpoint.h5 (the extension .h5 is replaced if present, else appended to).

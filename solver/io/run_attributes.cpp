@@ -27,14 +27,14 @@ void write_run_header(hid_t file, const std::string& path, const RunConfig& conf
   write_string_attribute(file, "call", provenance.call, path);
   write_string_attribute(file, "created_utc", utc_now(), path);
   write_string_attribute(file, "config", config.to_json().dump(), path);
+  const Handle setup = group_create(file, "setup", path);
+  write_string_attribute(setup, "config_input", provenance.config_input, path);
   const struct { const char* name; double value; } constants[] = {
       {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},
       {"lambda", d.lambda}, {"h", d.h}, {"f", config.friction.f}, {"c_s", d.c_s}, {"c_l", d.c_l}, {"p0", d.p0},
       {"V0", d.V0}, {"dt", d.dt}, {"t_end", config.time.t_end}, {"hht_alpha", config.time.hht_alpha},
       {"t_onset_estimate", d.t_onset_estimate}};
-  for (const auto& c : constants) write_double_attribute(file, c.name, c.value, path);
-  const Handle setup = group_create(file, "setup", path);
-  write_string_attribute(setup, "config_input", provenance.config_input, path);
+  for (const auto& c : constants) write_double_attribute(setup, c.name, c.value, path);
 }
 
 void write_run_outcome(hid_t file, const std::string& path, const RunRecord& record) {
@@ -43,7 +43,9 @@ void write_run_outcome(hid_t file, const std::string& path, const RunRecord& rec
   replace_string_attribute(file, "end_reason", record.end_reason, path);
   replace_int_attribute(file, "n_steps_done", record.n_steps_done, path);
   replace_double_attribute(file, "t_first_opening", record.t_first_opening, path);
-  replace_double_attribute(file, "u_x_preshear", record.u_x_preshear, path);
+  const Handle setup = group_open(file, "setup", path);
+  replace_double_attribute(setup, "u_x_preshear", record.u_x_preshear, path);
+  replace_double_attribute(setup, "opening_threshold", record.opening_threshold, path);
 }
 
 }  // namespace slidewave

@@ -1,7 +1,9 @@
 #pragma once
-// What run.h5 says about itself (docs/contracts.md section 2): the header written when the file is
-// created (provenance, resolved and verbatim configuration, derived constants) and the outcome
-// (complete, end_reason, n_steps_done, ...), rewritten whenever it changes (checkpoints, the end).
+// What run.h5 (format_version 2, docs/contracts.md section 2) says about itself: the header written
+// when the file is created (provenance and resolved configuration at the root; /setup: the verbatim
+// input and every derived constant) and the outcome (root: complete, end_reason, n_steps_done,
+// t_first_opening; /setup: u_x_preshear and opening_threshold, known after the preload), rewritten
+// whenever it changes (checkpoints, the end).
 #include <hdf5.h>
 
 #include <string>
@@ -11,18 +13,18 @@
 
 namespace slidewave {
 
-inline constexpr int kRunFormatVersion = 1;
+inline constexpr int kRunFormatVersion = 2;
 
 struct Provenance {
   std::string call;          ///< the command line
   std::string config_input;  ///< the verbatim input file
 };
 
-/// Root attributes that do not change during the run, and /setup. Throws IoError naming `path`.
+/// Root attributes that do not change during the run, and /setup with the constants known before the
+/// run. Throws IoError naming `path`.
 void write_run_header(hid_t file, const std::string& path, const RunConfig& config, const Provenance& provenance);
 
-/// Outcome attributes from the record (complete, end_reason, n_steps_done, t_first_opening,
-/// u_x_preshear), replacing earlier values. Throws IoError naming `path`.
+/// Outcome attributes from the record, replacing earlier values. Throws IoError naming `path`.
 void write_run_outcome(hid_t file, const std::string& path, const RunRecord& record);
 
 }  // namespace slidewave

@@ -40,7 +40,7 @@ class RunSession : public RunObserver {
   /// Interrupted: final checkpoint, RUN.partial.h5 closed (outcome interrupted). Otherwise: RUN.h5 in
   /// place, checkpoint removed. Throws IoError.
   void at_end(RunRecord& record, const Capture& capture) override;
-  const LoopState* start_state() const override { return resumed_ ? &start_.state : nullptr; }
+  const StateArrays* start_state() const override { return resumed_ ? &start_.state : nullptr; }
 
   /// After an error: closes the partial file and removes it, unless a checkpoint written by this run
   /// makes it resumable. Returns what was kept, for the message ("" when nothing).

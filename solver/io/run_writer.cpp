@@ -303,6 +303,7 @@ void RunWriter::flush_to_disk(RunRecord& record) {
   outcome_if_killed.n_steps_done = record.n_steps_done;
   outcome_if_killed.t_first_opening = record.t_first_opening;
   outcome_if_killed.u_x_preshear = record.u_x_preshear;
+  outcome_if_killed.opening_threshold = record.opening_threshold;
   write_run_outcome(files_->file, path_, outcome_if_killed);
   h5::flush_to_disk(files_->file, path_);
 }

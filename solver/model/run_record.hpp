@@ -1,6 +1,7 @@
 #pragma once
 // Everything a run produces, in memory, in the layout of run.h5 (docs/contracts.md, section 2).
-// Rows are appended as the run goes; the file is written once at the end (atomically).
+// Rows are appended as the run goes (by model/recorder.hpp only); the file is written once at the end
+// (atomically).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,9 +45,10 @@ struct RunRecord {
   std::vector<Snapshot> snapshots;
   bool complete = false;
   std::string end_reason;       ///< t_end | stop_after_opening | contact_not_converged | interrupted
-  int n_steps_done = 0;
+  std::int64_t n_steps_done = 0;
   double t_first_opening = -1;  ///< stage-3 time the interface first opened (-1: never)
   double u_x_preshear = 0;      ///< top shear displacement at the end of stage 2 (m)
+  double opening_threshold = 0; ///< opening (m) above which a node counts as open (model/recorder.hpp)
   int static_contact_iterations = 0;
 };
 

@@ -1,17 +1,21 @@
 #pragma once
-// Stage 3 of a run: the dynamic shear of the preloaded layer, top u_x growing at V0 from zero initial
-// velocity, integrated with HHT (time/hht.hpp); exact Signorini–Coulomb contact each step on the
-// Delassus operator of K_eff (factorized once).
+// A run: the preload (stages 1 and 2, model/layer_model.hpp), then stage 3, the dynamic shear of the
+// preloaded layer, top u_x growing at V0 from zero initial velocity, integrated with HHT
+// (time/hht_stepper.hpp); exact Signorini–Coulomb contact each step on the Delassus operator of K_eff
+// (factorized once), with the friction bounds of the configured law (contact/friction_law.hpp).
 //
 // Per step:  predictor  u~ = u + dt v + dt^2 (1/2 - beta) a
 //            free solve K_eff u_free = M u~ / (beta dt^2) - (1-a) K_fd u_d(n+1) - a K u(n) + a' C^T r(n)
 //            contact    y = C u_free - (u_x(n), 0) + w W r(n+1) under the local law (contact/*)
 //            correction u(n+1) = u_free + w Z r(n+1)
+//            record     energy ledger, friction memory, output rows, first opening (model/recorder.hpp)
 // where w = 1-a, a' = a ("alpha" weighting, contact forces like F_ext) or w = 1, a' = 0 ("end").
+// Everything carried from step to step is in LoopState (model/loop_state.hpp).
 #include <atomic>
 #include <functional>
 
 #include "model/layer_model.hpp"
+#include "model/recorder.hpp"
 #include "model/run_observer.hpp"
 #include "model/run_record.hpp"
 #include "model/step_profile.hpp"
@@ -25,14 +29,11 @@ using ProgressCallback = std::function<void(double, double, double, double, int)
 /// returned with complete = false and end_reason = "contact_not_converged".
 /// @param stop_requested  polled every step (signal handlers set it); ends the run as "interrupted"
 /// @param profile         if given, receives the wall-time split (bench/ only)
-/// @param observer        if given, sees the record after every step (streaming, checkpoints) and may
-///                        give a state to continue from (model/run_observer.hpp)
+/// @param observer        if given, sees the rows after every step (streaming, checkpoints) and may give a
+///                        state to continue from (model/run_observer.hpp); the returned record then holds
+///                        only the rows the observer left in it
 RunRecord simulate(const LayerModel& model, const ProgressCallback& progress = {},
                    const std::atomic<bool>* stop_requested = nullptr, StepProfile* profile = nullptr,
                    RunObserver* observer = nullptr);
-
-/// Threshold above which a contact node counts as open (m): 1 % of the preload displacement |Uy|
-/// (the same as analysis/opening.py, which documents the evidence for it).
-double opening_threshold(const RunConfig& config);
 
 }  // namespace slidewave

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 // Wall-time split of a run (seconds), filled by simulate() when asked; used by bench/, never by tests.
 namespace slidewave {
 
@@ -7,9 +8,9 @@ struct StepProfile {
   double predictor = 0;    ///< right-hand side of the free solve
   double free_solve = 0;   ///< K_eff u_free = rhs
   double contact = 0;      ///< Gauss–Seidel on W
-  double correction = 0;   ///< u(n+1) from the contact forces, Newmark update
-  double diagnostics = 0;  ///< energies, forces, output rows
-  int steps = 0;
+  double correction = 0;   ///< u(n+1) from the contact forces, Newmark update, K u(n+1), mass products
+  double diagnostics = 0;  ///< energy ledger, friction memory, output rows
+  std::int64_t steps = 0;
   long long contact_sweeps = 0;
 };
 

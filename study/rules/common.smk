@@ -3,6 +3,7 @@
 
 import functools
 import json
+import re
 import shlex
 from pathlib import Path
 

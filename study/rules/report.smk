@@ -69,44 +69,57 @@ rule paper_figure:
     shell: "cp {input} {output} 2> {log}"
 
 
+def numbers_spec():
+    """config `paper.numbers`: the grid sweep and {role: sweep} of paper/make_numbers.py."""
+    spec = config["paper"].get("numbers")
+    if not spec:
+        raise ValueError("paper.numbers: the paper needs its `grid` sweep and `sweeps` (study/config.yaml)")
+    return spec
+
+
+def swept_parameter(sweep):
+    """The one point parameter besides nu and f that a sweep varies."""
+    keys = [key for key in study_sweeps.varying_keys(points(sweep)) if key not in ("nu", "f")]
+    if len(keys) != 1:
+        raise ValueError(f"sweeps.{sweep}: paper.numbers needs a sweep of exactly one parameter besides "
+                         f"nu and f, found {keys}")
+    return keys[0]
+
+
 rule paper_numbers:
-    """Every number the paper quotes (paper/make_numbers.py) and its Table 1 (paper/make_table1.py)."""
+    """Every number the paper quotes (paper/make_numbers.py) and its Table 1 (paper/make_table1.py),
+    from the sweeps named in config `paper.numbers`, read at the `defaults` nu and f."""
     input:
         numbers_script="paper/make_numbers.py",
         table_script="paper/make_table1.py",
         summary="results/study/table/summary.json",
-        metrics="results/study/table/all_metrics.csv",
+        runs="results/study/table/all_metrics.csv",
         table="results/study/table/table1.csv",
-        flutter="results/theory/flutter.txt",
+        grid=lambda wc: f"results/{numbers_spec()['grid']}/table/all_metrics.csv",
+        sweeps=lambda wc: [f"results/{sweep}/table/all_metrics.csv" for sweep in numbers_spec()["sweeps"].values()],
     output:
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
-    params: tolerance=config["reference"]["tolerance"]
+    params:
+        cell=f"{config['defaults']['nu']} {config['defaults']['f']}",
+        sweeps=lambda wc: " ".join(f"--sweep {role} {swept_parameter(sweep)} results/{sweep}/table/all_metrics.csv"
+                                   for role, sweep in numbers_spec()["sweeps"].items()),
     log: "logs/paper_numbers.log"
     shell:
-        "({PYTHON} {input.numbers_script} {input.summary} {input.metrics} --table1 {input.table}"
-        " --flutter {input.flutter}"
-        " -o {output.numbers} && {PYTHON} {input.table_script} {input.table} -o {output.table}"
-        " --tolerance {params.tolerance}) > {log} 2>&1"
-
-
-VARIANTS = {  # label in the report -> sweep (study/config.yaml): one modelling choice changed each
-    "paper defaults (reduced+ASQBI, alpha weighting, dt=0.5/c_s, seed 1)": "table1_h32",
-    "full 2x2 integration": "variant_full",
-    "1-point, no hourglass control": "variant_reduced_pure",
-    "contact forces at n+1 only": "variant_contact_end",
-    "dt = 1 m / c_s": "variant_dt1",
-    "perturbation seed 2": "variant_seed2",
-}
+        "({PYTHON} {input.numbers_script} --summary {input.summary} --runs {input.runs} --grid {input.grid}"
+        " --table1 {input.table} --reference-cell {params.cell} {params.sweeps} -o {output.numbers}"
+        " && {PYTHON} {input.table_script} {input.table} -o {output.table}) > {log} 2>&1"
 
 
 rule paper_variants:
-    """The method-variant table of the reproduction report (paper/make_variants.py)."""
+    """The method-variant table of the reproduction report (paper/make_variants.py), config `paper.variants`."""
     input:
         script="paper/make_variants.py",
-        summaries=[f"results/{sweep}/table/summary.json" for sweep in VARIANTS.values()],
+        summaries=[f"results/{sweep}/table/summary.json" for sweep in config["paper"]["variants"].values()],
     output: "paper/generated/variants.tex"
-    params: pairs=" ".join(f"'{label}=results/{sweep}/table/summary.json'" for label, sweep in VARIANTS.items())
+    params:
+        pairs=" ".join(shlex.quote(f"{label}=results/{sweep}/table/summary.json")
+                       for label, sweep in config["paper"]["variants"].items())
     log: "logs/paper_variants.log"
     shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
 

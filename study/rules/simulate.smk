@@ -19,6 +19,12 @@ if "SLIDEWAVE_BIN" not in os.environ:
             " && cmake --build build --target slidewave -j{threads}) > {log} 2>&1"
 
 
+# `--resume`: continue from run.h5's checkpoint when one exists for the same config and build, else
+# start from the beginning, so that a job killed at a time limit continues where it stopped. Passed
+# only to a solver that has the option (asked at run time: the binary may be built by this workflow).
+RESUME_OPTION = "$({input.solver} run --help 2>&1 | grep -q -e --resume && echo --resume)"
+
+
 rule configure:
     """Write the solver configuration of one point (study/make_run_config.py)."""
     output: "results/{sweep}/{point}/config.json"
@@ -39,11 +45,16 @@ rule simulate:
     resources:
         mem_mb=lambda wc: run_estimate(wc.sweep, wc.point)["mem_mb"],
         runtime=lambda wc: run_estimate(wc.sweep, wc.point)["runtime"],
-    # Exit 1 with a written run.h5 is a run that ended early (contact_not_converged, marked complete = 0
-    # in the file): it is kept and measured as what it is, so that one hard point cannot stop a sweep.
-    # Anything else (bad config: exit 2, a crash, no file) fails the rule.
-    shell: "status=0; {input.solver} run {input.config} -o {output} --threads {threads} > {log} 2>&1 || status=$?;"
+    # Exit codes of `slidewave run` (docs/contracts.md): 0 complete; 1 contact failure, run.h5 written
+    # with complete = 0 (a physical outcome: kept and measured as what it is, so that one hard point
+    # cannot stop a sweep). Anything else fails the job and leaves no output: 2 bad input, 3 interrupted
+    # (only RUN.partial.h5 and the checkpoint beside run.h5, which the next attempt resumes from),
+    # 4 I/O error, a crash. An interrupted run is therefore never an output of this rule; the trap keeps
+    # it so also when the job itself is signalled (Snakemake stopped, a scheduler's time limit).
+    shell: "trap 'rm -f {output}; exit 143' TERM INT; status=0; {input.solver} run {input.config} -o {output} --threads {threads} " + RESUME_OPTION +
+           " > {log} 2>&1 || status=$?;"
            " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output} ]; }}"
+           " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log}; rm -f {output}; exit 1; }}"
 
 
 rule measure:

@@ -1,16 +1,18 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
 
-localrules: aggregate, aggregate_study, compare, reference_check, flutter
+localrules: aggregate, aggregate_study, compare, reference_check, flutter, publish_table, publish_results
 
 
 ruleorder: aggregate_study > aggregate
 
 
 rule aggregate:
-    """`python3 -m analysis aggregate`: one sweep's metrics -> Table 1 (csv/md/tex), summary, all metrics."""
+    """`python3 -m analysis aggregate`: one sweep's metrics -> Table 1 (csv/md/tex), summary, all metrics
+    (with the columns derived for tables and figures, e.g. inside_flutter_wedge)."""
     input:
         metrics=lambda wc: run_files(wc.sweep, "metrics.json"),
         reference=repo_path(config["reference"]["table"]),
+        flutter="results/theory/flutter.txt",
     output: table_files("{sweep}")
     params:
         directory="results/{sweep}/table",
@@ -18,7 +20,7 @@ rule aggregate:
         select=lambda wc: table_select(points(wc.sweep), sweep_spec(wc.sweep).get("highlight")),
     log: "results/{sweep}/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
         " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
@@ -28,6 +30,7 @@ rule aggregate_study:
     input:
         metrics=lambda wc: [f"{run_dir(sweep, name)}/metrics.json" for name, (sweep, _) in study_points().items()],
         reference=repo_path(config["reference"]["table"]),
+        flutter="results/theory/flutter.txt",
     output: table_files("study")
     params:
         directory="results/study/table",
@@ -35,7 +38,7 @@ rule aggregate_study:
         select=lambda wc: table_select({name: point for name, (_, point) in study_points().items()}),
     log: "results/study/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference}"
+        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
         " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
@@ -97,3 +100,29 @@ rule flutter:
     params: nu=" ".join(f"{nu:.6g}" for nu in flutter_nu())
     log: "results/theory/logs/flutter.log"
     shell: "{PYTHON} -m analysis flutter-boundary --nu {params.nu} > {output} 2> {log}"
+
+
+# study/results/: the committed copy of the study's small tables (no HDF5), written only by this rule.
+PUBLISHED_TABLES = ("table1.csv", "summary.json", "all_metrics.csv")
+
+
+def published_sweeps():
+    """The sweeps whose tables study/results/ keeps: the paper's study, its merged table, the CI
+    reference check and the method variants, each once."""
+    sweeps = [*config["study"], "study", config["reference"]["check_sweep"], *config["paper"]["variants"].values()]
+    return list(dict.fromkeys(sweeps))
+
+
+rule publish_table:
+    """One table of a sweep copied into study/results/<sweep>/ (the committed results)."""
+    input: "results/{sweep}/table/{name}"
+    output: repo_path("study/results/{sweep}/{name}")
+    wildcard_constraints: name="|".join(re.escape(n) for n in PUBLISHED_TABLES)
+    log: "results/{sweep}/logs/publish_{name}.log"
+    shell: "cp {input} {output} 2> {log}"
+
+
+rule publish_results:
+    """`snakemake publish_results`: refresh study/results/ from results/ (runs whatever is missing:
+    the whole study, the variants and the CI sweep). Commit study/results/ afterwards."""
+    input: [repo_path(f"study/results/{sweep}/{name}") for sweep in published_sweeps() for name in PUBLISHED_TABLES]

@@ -1,10 +1,14 @@
-"""Synthetic run files (docs/contracts.md section 2, format_version 1) with known answers.
+"""Synthetic run files (docs/contracts.md section 2, format_version 2) with known answers.
 
 A run has the paper's time line: stick until `t_onset`, sub-threshold uniform slip until the pulses
 appear at `t_pulses`, slip pulses of prescribed celerity (each a plateau of slip velocity with
 smooth edges, moving rigidly, optionally decaying, decelerating and opening), stick again after
 `t_stop`. T/N follows piecewise-linear knots; the energy series carry a prescribed balance error.
 Used by the analysis tests and reusable by pipeline tests (`write_run(path, Scenario(...))`).
+
+The derived constants (c_s, c_l, p0, dt, the onset estimate, the opening threshold) are the
+solver's formulas written out here on purpose: a synthetic file stands in for the solver, and
+tests/analysis/test_theory.py checks analysis.theory against the real solver.
 """
 
 from __future__ import annotations
@@ -18,6 +22,8 @@ import numpy as np
 E, RHO, H = 1000.0, 1000.0, 25.0
 UY_OVER_H = -1e-3
 PRESHEAR = 0.95
+#: The solver's opening threshold / |Uy| (the one of stop_after_opening).
+OPENING_THRESHOLD_REL = 1e-2
 
 
 def wave_speeds(nu: float) -> tuple[float, float]:
@@ -80,8 +86,10 @@ class Scenario:
     ratio_knots: list[tuple[float, float]] | None = None  # (t, T/N); None = drop to -0.2
     ratio_chatter: float = 0.0     # T/N alternates by +-this from step to step (as the solver's does)
     energy_error: float = 1e-4     # max |residual| / max work
-    format_version: object = 1
+    format_version: object = 2
     creator: str = "slidewave"
+    complete: int = 1
+    end_reason: str = "t_end"
     drop_attributes: tuple[str, ...] = ()
     drop_datasets: tuple[str, ...] = ()
     config_text: str | None = None
@@ -94,11 +102,12 @@ def default_config(s: Scenario) -> dict:
         "geometry": {"H": H, "lambda_over_H": s.lambda_over_H},
         "mesh": {"elements_per_H": s.elements_per_H, "integration": "reduced", "mass": "consistent"},
         "loading": {"Uy_over_H": UY_OVER_H, "preshear_ratio": PRESHEAR, "V0_over_cs": s.V0_over_cs},
-        "friction": {"f": s.f, "regularization": "none", "pc_length": 0.5},
+        "friction": {"f": s.f, "regularization": "none", "pc_length": 0.5, "pc_velocity": 0.0},
         "time": {"dt_times_cs": 0.5, "dt": None, "t_end": s.t_end, "hht_alpha": 0.1,
                  "contact_weighting": "alpha", "stop_after_opening": None},
         "contact": {"tolerance": 1e-10, "max_iterations": 2000},
         "perturbation": {"amplitude": 1e-5, "seed": 1},
+        "numerics": {"linear_solver": "circulant"},
         "output": {"interface_stride": s.interface_stride, "snapshot_times": [], "progress": "never"},
     }
 
@@ -174,12 +183,15 @@ def write_run(path, s: Scenario) -> dict:
         "format_version": s.format_version, "creator": s.creator, "slidewave_version": "0.0.0-synthetic",
         "git_commit": "synthetic", "call": "synthetic_run.py", "created_utc": "2024-01-01T00:00:00Z",
         "config": s.config_text if s.config_text is not None else json.dumps(config),
-        "complete": 1, "end_reason": "t_end", "E": E, "nu": s.nu, "rho": RHO, "H": H,
+        "complete": s.complete, "end_reason": s.end_reason, "n_steps_done": d["tg"].size - 1,
+    }
+    setup = {
+        "config_input": json.dumps(config), "E": E, "nu": s.nu, "rho": RHO, "H": H,
         "lambda": d["lam"], "h": d["h"], "f": s.f, "c_s": d["c_s"], "c_l": d["c_l"], "p0": d["p0"],
         "V0": d["V0"], "dt": d["dt"], "t_end": s.t_end, "hht_alpha": 0.1,
-        "n_steps_done": d["tg"].size - 1,
         "t_onset_estimate": (1 - PRESHEAR) * s.f * d["p0"] * H / G / d["V0"],
         "u_x_preshear": PRESHEAR * s.f * d["p0"] * H / G,
+        "opening_threshold": OPENING_THRESHOLD_REL * abs(UY_OVER_H) * H,
     }
     interface = {
         "x": (d["x"], "m"), "t": (d["t"], "s"), "slip_velocity": (d["v"], "m/s"),
@@ -201,7 +213,10 @@ def write_run(path, s: Scenario) -> dict:
         for key, value in attrs.items():
             if key not in s.drop_attributes and value is not None:
                 file.attrs[key] = value
-        file.create_dataset("/setup/config_input", data=json.dumps(config))
+        group = file.create_group("setup")
+        for key, value in setup.items():
+            if key not in s.drop_attributes:
+                group.attrs[key] = value
         for group, items in (("interface", interface), ("global", series)):
             for name, (data, unit) in items.items():
                 if f"/{group}/{name}" in s.drop_datasets:
@@ -225,3 +240,26 @@ def paper_case(**changes) -> Scenario:
     base = Scenario(pulses=[Pulse(celerity=0.882, x_front=10.0, t_start=800.0, opening=0.01,
                                   opening_start=880.0)])
     return replace(base, **changes)
+
+
+def store_with_filters(path, name: str, **filters) -> None:
+    """Rewrite dataset `name` of a run file as one chunk with HDF5 filters (e.g. fletcher32=True)."""
+    import h5py
+
+    with h5py.File(path, "a") as file:
+        data = file[name][()]
+        del file[name]
+        file.create_dataset(name, data=data, chunks=data.shape, **filters)
+
+
+def corrupt_stored_chunk(path, name: str, at: int = 7) -> None:
+    """Flip one byte of the first stored chunk of a dataset, behind HDF5's back (a damaged disk)."""
+    import h5py
+
+    with h5py.File(path, "r") as file:
+        offset = file[name].id.get_chunk_info(0).byte_offset + at
+    with open(path, "r+b") as stream:
+        stream.seek(offset)
+        byte = stream.read(1)
+        stream.seek(offset)
+        stream.write(bytes([byte[0] ^ 0xFF]))

@@ -6,17 +6,18 @@ import numpy as np
 import pytest
 
 from analysis import celerity as cel
+from analysis import edges, tracking, xcorr
 from synthetic_run import Pulse, Scenario, build_fields, wave_speeds
 
 
 def measure_map(scenario, **kw):
     d = build_fields(scenario)
     c_s = wave_speeds(scenario.nu)[0]
-    front_map = cel.find_edges(d["x"], d["t"], d["v"], 10 * d["V0"])
+    front_map = tracking.find_edges(d["x"], d["t"], d["v"], 10 * d["V0"])
     result = cel.celerity_from_fronts(front_map, min_speed=0.1 * c_s, **kw)
-    xcorr = (cel.celerity_by_xcorr(d["x"], d["t"], d["v"], result.window)
-             if result.window else cel.XcorrResult(math.nan))
-    return result, xcorr, d
+    by_xcorr = (xcorr.celerity_by_xcorr(d["x"], d["t"], d["v"], result.window)
+                if result.window else xcorr.XcorrResult(math.nan))
+    return result, by_xcorr, d
 
 
 # ---------------------------------------------------------------------------------------------
@@ -30,43 +31,43 @@ def test_slipping_mask_drops_specks_and_fills_gaps():
     v[11] = 0.0                     # one-node gap inside a pulse: filled
     v[18:] = 1.0
     v[0] = 1.0                      # run 18, 19, 0 wraps across the period
-    mask = cel.slipping_mask(v, 0.5)
+    mask = edges.slipping_mask(v, 0.5)
     assert not mask[3]
     assert mask[8:15].all()
     assert mask[[18, 19, 0]].all() and not mask[1]
 
 
 def test_edges_are_located_between_nodes_by_linear_interpolation():
-    grid = cel.PeriodicGrid(x0=0.0, dx=0.5, n=16)
+    grid = edges.PeriodicGrid(x0=0.0, dx=0.5, n=16)
     v = np.zeros(16)
     v[5:9] = 1.0
     v[4] = 0.25       # left edge: threshold 0.5 is crossed 1/3 of the way from node 4 to node 5
     v[9] = 0.4        # right edge: crossed 5/6 of the way from node 8 to node 9
-    mask = cel.slipping_mask(v, 0.5)
-    left, right, peaks = cel.edge_positions(v, mask, 0.5, grid)
+    mask = edges.slipping_mask(v, 0.5)
+    left, right, peaks = edges.edge_positions(v, mask, 0.5, grid)
     assert left == pytest.approx([0.5 * (4 + 1 / 3)])
     assert right == pytest.approx([0.5 * (8 + 5 / 6)])
     assert peaks == pytest.approx([1.0])
 
 
 def test_edges_across_the_periodic_boundary():
-    grid = cel.PeriodicGrid(x0=0.0, dx=1.0, n=10)
+    grid = edges.PeriodicGrid(x0=0.0, dx=1.0, n=10)
     v = np.zeros(10)
     v[[8, 9, 0, 1]] = [1.0, 2.0, 3.0, 1.0]
-    left, right, peaks = cel.edge_positions(v, cel.slipping_mask(v, 0.5), 0.5, grid)
+    left, right, peaks = edges.edge_positions(v, edges.slipping_mask(v, 0.5), 0.5, grid)
     assert left == pytest.approx([7.5]) and right == pytest.approx([1.5]) and peaks == pytest.approx([3.0])
 
 
 def test_uniform_and_empty_frames_have_no_edges():
-    grid = cel.PeriodicGrid(x0=0.0, dx=1.0, n=10)
+    grid = edges.PeriodicGrid(x0=0.0, dx=1.0, n=10)
     for v in (np.ones(10), np.zeros(10)):
-        left, right, peaks = cel.edge_positions(v, cel.slipping_mask(v, 0.5), 0.5, grid)
+        left, right, peaks = edges.edge_positions(v, edges.slipping_mask(v, 0.5), 0.5, grid)
         assert left.size == right.size == peaks.size == 0
 
 
 def test_grid_rejects_non_uniform_nodes():
     with pytest.raises(ValueError, match="uniformly"):
-        cel.PeriodicGrid.from_nodes(np.array([0.0, 1.0, 2.5, 3.0]))
+        edges.PeriodicGrid.from_nodes(np.array([0.0, 1.0, 2.5, 3.0]))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -102,10 +103,10 @@ CASES = {
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_celerity_within_half_a_percent(name):
     scenario, true_celerity = CASES[name]
-    result, xcorr, _ = measure_map(scenario)
+    result, by_xcorr, _ = measure_map(scenario)
     assert result.reason == "ok"
     assert result.celerity == pytest.approx(true_celerity, rel=5e-3)
-    assert xcorr.celerity == pytest.approx(true_celerity, rel=5e-3)
+    assert by_xcorr.celerity == pytest.approx(true_celerity, rel=5e-3)
     assert result.direction == (1 if true_celerity > 0 else -1)
     assert result.r2 > 0.999
 
@@ -157,9 +158,9 @@ def test_window_start_can_be_given():
     (Scenario(uniform_level=0.0), "no_slip"),
 ])
 def test_no_front_gives_nan(scenario, reason):
-    result, xcorr, _ = measure_map(scenario)
+    result, by_xcorr, _ = measure_map(scenario)
     assert result.reason == reason
-    assert math.isnan(result.celerity) and result.window is None and math.isnan(xcorr.celerity)
+    assert math.isnan(result.celerity) and result.window is None and math.isnan(by_xcorr.celerity)
 
 
 def test_noise_alone_makes_no_major_front():
@@ -183,7 +184,7 @@ def test_xcorr_of_a_rigidly_moving_pattern():
     t = np.arange(80) * 3.1
     c = -1.7
     v = np.exp(np.cos(2 * np.pi * (x[None, :] - c * t[:, None]) / 50.0) * 2.0)
-    result = cel.celerity_by_xcorr(x, t, v, (t[0], t[-1]))
+    result = xcorr.celerity_by_xcorr(x, t, v, (t[0], t[-1]))
     assert result.celerity == pytest.approx(c, rel=1e-4)
     assert result.peak_correlation == pytest.approx(1.0, abs=1e-3)
 
@@ -191,7 +192,7 @@ def test_xcorr_of_a_rigidly_moving_pattern():
 def test_pooled_slope_of_parallel_tracks():
     t = np.linspace(0.0, 100.0, 21)
     ones = np.ones_like(t)
-    tracks = [cel.EdgeTrack("right", t, 3.0 + 0.5 * t, ones), cel.EdgeTrack("right", t, -40.0 + 0.5 * t, ones)]
+    tracks = [tracking.EdgeTrack("right", t, 3.0 + 0.5 * t, ones), tracking.EdgeTrack("right", t, -40.0 + 0.5 * t, ones)]
     slope, stderr, r2, rms, n = cel.pooled_slope(tracks)
     assert slope == pytest.approx(0.5, rel=1e-12) and r2 == pytest.approx(1.0) and n == 42
     assert rms == pytest.approx(0.0, abs=1e-9)

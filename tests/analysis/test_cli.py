@@ -71,3 +71,28 @@ def test_flutter_boundary_command_with_the_real_module():
     for line in lines:
         for token in line[1:]:
             float(token)  # numbers, inf or nan
+
+
+def test_measure_refuses_an_interrupted_run_unless_asked(run_file, tmp_path):
+    run = run_file(paper_case(complete=0, end_reason="interrupted"))
+    out = tmp_path / "metrics.json"
+    result = run_cli("measure", run, "-o", out)
+    assert result.returncode == 2 and not out.exists()
+    assert f"{run}: the run was interrupted" in result.stderr and "--allow-incomplete" in result.stderr
+    result = run_cli("measure", run, "-o", out, "--allow-incomplete")
+    assert result.returncode == 0, result.stderr
+    assert "INCOMPLETE (interrupted)" in result.stdout
+    metrics = json.loads(out.read_text())
+    assert metrics["complete"] is False and metrics["end_reason"] == "interrupted"
+
+
+def test_measure_refuses_to_write_over_its_input(run_file, tmp_path):
+    run = run_file(paper_case())
+    before = run.read_bytes()
+    link = tmp_path / "link.h5"
+    link.symlink_to(run)
+    hard = tmp_path / "hard.h5"
+    hard.hardlink_to(run)
+    for output in (run, link, hard, tmp_path / "." / run.name):
+        assert cli.main(["measure", str(run), "-o", str(output)]) == 2
+    assert run.read_bytes() == before

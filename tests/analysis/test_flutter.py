@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from analysis import flutter
+from analysis import flutter, flutter_mode
 
 NUS_UNSTABLE = (0.1, 0.25, 0.4)
 
@@ -97,7 +97,7 @@ def test_reversed_sliding_mirrors_the_wave():
 def test_reconstructed_field_solves_navier_and_interface(nu, f):
     (root,) = flutter.growing_roots(nu, f)
     k, mu, c_s = 2.0, 3.0, 1.5
-    mode = flutter.reconstruct_field(root, nu, f, wavenumber=k, shear_modulus=mu, shear_speed=c_s,
+    mode = flutter_mode.reconstruct_field(root, nu, f, wavenumber=k, shear_modulus=mu, shear_speed=c_s,
                                      slip_amplitude=0.7)
     rho, lam = mode.density, mode.lame_lambda
     assert rho == pytest.approx(mu / c_s**2)
@@ -143,9 +143,9 @@ def test_reconstructed_field_solves_navier_and_interface(nu, f):
 
 def test_reconstruct_field_rejects_non_roots():
     with pytest.raises(ValueError):
-        flutter.reconstruct_field(1.3 + 0.2j, 0.25, 1.5)
+        flutter_mode.reconstruct_field(1.3 + 0.2j, 0.25, 1.5)
     with pytest.raises(ValueError):
-        flutter.reconstruct_field(0.0, 0.25, 1.5)
+        flutter_mode.reconstruct_field(0.0, 0.25, 1.5)
 
 
 # --- (4) frictionless: no surface wave -----------------------------------------------------------
@@ -222,3 +222,12 @@ def test_invalid_poisson_ratio_rejected():
     for nu in (-0.1, 0.5, 0.7):
         with pytest.raises(ValueError):
             flutter.flutter_boundary(nu)
+
+
+def test_inside_wedge_is_strict_and_follows_the_boundary():
+    lower, upper = flutter.flutter_boundary(0.2)
+    assert flutter.inside_wedge(0.2, 1.5) and flutter.inside_wedge(0.2, 0.5 * (lower + upper))
+    assert not flutter.inside_wedge(0.2, lower) and not flutter.inside_wedge(0.2, upper)
+    assert not flutter.inside_wedge(0.2, 0.9) and not flutter.inside_wedge(0.2, upper + 0.1)
+    assert flutter.inside_wedge(0.4, 1e6)            # open wedge for nu >= 1/3
+    assert not flutter.inside_wedge(0.0, 1.5)        # no instability at nu = 0

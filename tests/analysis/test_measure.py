@@ -30,6 +30,10 @@ def test_paper_case(run_file):
     assert m["celerity_window"][0] == pytest.approx(800.0, abs=4.0)
     assert m["celerity_window"][1] - m["celerity_window"][0] == pytest.approx(200.0, abs=4.0)
     assert m["regime"] == "intersonic" and m["below_sqrt2_cs"] is True
+    assert m["intersonic_below_sqrt2_cs"] is True  # c_s = 0.645 <= 0.882 < sqrt(2) c_s = 0.913
+    assert m["pulse_spacing_theory_over_H"] == pytest.approx(m["pulse_spacing_theory"] / 25.0)
+    assert m["pulse_spacing_theory_over_H"] == pytest.approx(2 * math.sqrt((0.882 / m["c_s"]) ** 2 - 1),
+                                                             rel=1e-2)
     assert m["category"] == "intersonic_opening_inversion"
     # Onset: the first output with slip (synthetic onset at 740 s), vs the quasi-static estimate.
     assert 740.0 <= m["onset_time"] < 740.0 + 4 * m["dt"]
@@ -160,3 +164,97 @@ def test_windows_are_in_the_paper_time_unit():
 def test_the_paper_window_is_200_s(run_file):
     m = measure(run_file, paper_case())
     assert m["window_length"] == 200.0 and m["major_duration"] == 100.0
+
+
+def _edit(path, **setup):
+    import h5py
+
+    with h5py.File(path, "a") as file:
+        for key, value in setup.items():
+            file["setup"].attrs[key] = value
+    return path
+
+
+def test_the_solver_constants_are_read_not_recomputed(run_file):
+    # A threshold above the 1 cm opening: the run's own value decides, so no opening.
+    path = _edit(run_file(paper_case()), opening_threshold=0.02, t_onset_estimate=123.0)
+    m = measure_run(load_run(path))
+    assert m["opening_threshold"] == 0.02 and m["opening"] is False and m["max_opening"] > 0.009
+    assert m["onset_time_estimate"] == 123.0
+
+
+def test_a_config_without_a_parameter_is_an_input_error(run_file):
+    from analysis.errors import InputError
+    from synthetic_run import default_config
+
+    config = default_config(paper_case())
+    del config["friction"]["pc_velocity"]
+    with pytest.raises(InputError, match="lacks 'friction.pc_velocity'"):
+        measure(run_file, paper_case(config_text=json.dumps(config)))
+
+
+def test_outcome_of_the_run_is_carried(run_file):
+    m = measure(run_file, paper_case(complete=0, end_reason="contact_not_converged"))
+    assert m["complete"] is False and m["end_reason"] == "contact_not_converged"
+    assert m["category"] == "intersonic_opening_inversion" and m["non_physical"] is False
+    m = measure(run_file, paper_case())
+    assert m["complete"] is True and m["end_reason"] == "t_end"
+
+
+def test_without_friction_nothing_drops_or_inverts(run_file):
+    # f = 0: T = 0; T/N is round-off around 0 (here +-1e-17 chatter, some of it negative).
+    m = measure(run_file, paper_case(f=0.0, ratio_knots=[(0.0, 0.0), (1500.0, 0.0)],
+                                     ratio_chatter=1e-17))
+    assert m["min_T_over_N"] < 0
+    assert m["n_drops"] == 0 and m["inversion"] is False and m["first_drop_start_time"] is None
+    assert m["category"] == "intersonic_opening"
+    assert m["celerity"] == pytest.approx(0.882, rel=5e-3)
+
+
+def test_an_opening_larger_than_the_layer_is_non_physical(run_file):
+    scenario = Scenario(pulses=[Pulse(0.882, opening=30.0, opening_start=880.0)],
+                        complete=0, end_reason="contact_not_converged")
+    m = measure(run_file, scenario)
+    assert m["non_physical"] is True and m["category"] == "non_physical"
+    assert m["non_physical_reason"].startswith("opening_above_H: max opening 30")
+    assert m["max_opening"] == pytest.approx(30.0, rel=1e-3)  # the number stays visible
+
+
+def test_a_run_that_blew_up_is_non_physical_and_measured_before_the_blow_up(run_file):
+    import h5py
+    import numpy as np
+
+    path = run_file(paper_case(complete=0, end_reason="contact_not_converged"))
+    with h5py.File(path, "a") as file:
+        t = file["/interface/t"][()]
+        opening = file["/interface/opening"][()]
+        opening[t >= 1400.0, 3] = np.inf
+        file["/interface/opening"][...] = opening
+        tg = file["/global/t"][()]
+        work = file["/global/work_external"][()]
+        work[tg >= 1420.0] = np.nan
+        file["/global/work_external"][...] = work
+    m = measure_run(load_run(path))
+    assert m["category"] == "non_physical"
+    assert m["non_physical_reason"] == "non_finite: /interface/opening, /global/work_external"
+    assert m["celerity"] == pytest.approx(0.882, rel=5e-3) and m["max_opening"] < 1.0
+
+
+@pytest.mark.parametrize("stride, coarse", [(19, False), (21, True), (60, True)])
+def test_sampling_too_coarse_is_its_own_category(run_file, stride, coarse):
+    # 2H / (c_s dt_out) frames per shear round trip with dt_out = stride * 0.5 m / c_s: 100 / stride.
+    m = measure(run_file, paper_case(interface_stride=stride))
+    assert m["output_frames_per_round_trip"] == pytest.approx(100.0 / stride)
+    assert m["sampling_too_coarse"] is coarse
+    assert (m["category"] == "sampling_too_coarse") is coarse
+
+
+def test_derived_metrics_figures_and_paper_need(run_file):
+    m = measure(run_file, paper_case())
+    assert m["celerity_over_cs"] == pytest.approx(m["celerity"] / m["c_s"], rel=1e-15)
+    assert m["first_drop_start_after_onset"] == pytest.approx(m["first_drop_start_time"] - m["onset_time"])
+    assert m["first_drop_duration"] == pytest.approx(m["first_drop_bottom_time"] - m["first_drop_start_time"])
+    # nu = 0.2: the wedge is 1 < f < 6.19 (analysis.flutter); nu = 0 has none.
+    assert m["inside_flutter_wedge"] is True
+    assert measure(run_file, paper_case(f=0.8))["inside_flutter_wedge"] is False
+    assert measure(run_file, paper_case(nu=0.0))["inside_flutter_wedge"] is False

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from analysis import energy, inversion, opening, pulses, regime
-from analysis.celerity import EdgeTrack
+from analysis.tracking import EdgeTrack
 
 
 def test_drops_with_hysteresis():
@@ -33,7 +33,7 @@ def test_opening_summary_and_distance_behind_front():
     u = np.full((3, 10), 1e-13)
     u[1, 4] = 3e-4
     u[2, 5] = 2e-2
-    s = opening.summarize_opening(x, t, u, opening.opening_threshold(-0.025))
+    s = opening.summarize_opening(x, t, u, 2.5e-4)
     assert s.opened and s.t_first == 1.0 and s.x_first == 4.0
     assert s.max_opening == 2e-2 and s.t_max == 2.0 and s.open_fraction_max == 0.1
     closed = opening.summarize_opening(x, t, np.full((3, 10), 1e-13), 2.5e-5)
@@ -73,7 +73,21 @@ def test_category_names_are_declared():
                 for inverted in (False, True):
                     seen.add(regime.category(slipped=slipped, has_front=has_front, opened=opened,
                                              celerity=c, c_s=0.6, c_l=1.0, inversion=inverted))
+    kw = dict(slipped=True, has_front=True, opened=True, celerity=0.8, c_s=0.6, c_l=1.0, inversion=True)
+    seen.add(regime.category(**kw, sampling_too_coarse=True))
+    seen.add(regime.category(**kw, non_physical=True))
+    # A non-physical state wins over everything, coarse sampling over what the map shows.
+    assert regime.category(**kw, non_physical=True, sampling_too_coarse=True) == "non_physical"
+    assert regime.category(**kw, sampling_too_coarse=True) == "sampling_too_coarse"
     assert seen == set(regime.CATEGORIES)
+
+
+def test_intersonic_below_sqrt2_cs():
+    assert regime.intersonic_below_sqrt2_cs(0.7, 0.6) is True
+    assert regime.intersonic_below_sqrt2_cs(-0.7, 0.6) is True
+    assert regime.intersonic_below_sqrt2_cs(0.5, 0.6) is False   # subsonic
+    assert regime.intersonic_below_sqrt2_cs(0.9, 0.6) is False   # above sqrt(2) c_s = 0.849
+    assert regime.intersonic_below_sqrt2_cs(math.nan, 0.6) is None
 
 
 def test_energy_balance_error():

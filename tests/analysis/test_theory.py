@@ -1,6 +1,9 @@
 """analysis.theory against the paper's Table 1 and closed forms."""
 
+import json
 import math
+import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -55,3 +58,52 @@ def test_pulse_spacing():
     assert theory.pulse_spacing(-math.sqrt(5) * c_s, c_s, 25.0) == pytest.approx(100.0, rel=1e-12)
     assert math.isnan(theory.pulse_spacing(0.9 * c_s, c_s, 25.0))
     assert math.isnan(theory.pulse_spacing(math.nan, c_s, 25.0))
+
+
+# The solver writes the constants it uses; analysis.theory must give the same numbers before a run
+# exists. A tiny run (H/2, a few steps) with values away from the defaults, so that a default cannot
+# hide a mismatch.
+SOLVER = Path(__file__).resolve().parents[2] / "build" / "slidewave"
+TINY = {
+    "material": {"E": 2000.0, "nu": 0.3, "rho": 900.0},
+    "geometry": {"H": 10.0, "lambda_over_H": 2.0},
+    "mesh": {"elements_per_H": 2},
+    "loading": {"Uy_over_H": -2e-3, "preshear_ratio": 0.9, "V0_over_cs": 1e-4},
+    "friction": {"f": 0.7},
+    "time": {"dt_times_cs": 0.25, "t_end": 0.5},
+    "output": {"progress": "never"},
+}
+
+
+def expected_constants(config: dict) -> dict:
+    """c_s, c_l, p0, dt, t_onset_estimate of a config, from analysis.theory."""
+    m, g, lo = config["material"], config["geometry"], config["loading"]
+    E, nu, rho, H = m["E"], m["nu"], m["rho"], g["H"]
+    c_s = theory.shear_wave_speed(E, nu, rho)
+    p0 = theory.preload_pressure(lo["Uy_over_H"] * H, E, nu, H)
+    return {
+        "c_s": c_s, "c_l": theory.longitudinal_wave_speed(E, nu, rho), "p0": p0,
+        "dt": theory.time_step(c_s, config["time"]["dt_times_cs"]),
+        "t_onset_estimate": theory.onset_time_estimate(
+            f=config["friction"]["f"], preshear_ratio=lo["preshear_ratio"], p0=p0, H=H, E=E, nu=nu,
+            V0=lo["V0_over_cs"] * c_s),
+    }
+
+
+def assert_run_agrees_with_theory(run_path, config):
+    from analysis.io import load_run
+
+    run = load_run(run_path)
+    for name, value in expected_constants(config).items():
+        # Same formulas, possibly another order of operations: agreement to round-off.
+        assert run.setup[name] == pytest.approx(value, rel=1e-13, abs=0), name
+
+
+@pytest.mark.skipif(not SOLVER.exists(), reason=f"no solver at {SOLVER} (build it: scripts/build.sh)")
+def test_theory_agrees_with_what_the_solver_writes(tmp_path):
+    config_path, run_path = tmp_path / "tiny.json", tmp_path / "tiny.h5"
+    config_path.write_text(json.dumps(TINY))
+    result = subprocess.run([str(SOLVER), "run", str(config_path), "-o", str(run_path)],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert_run_agrees_with_theory(run_path, TINY)

@@ -13,6 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from analysis import aggregate, pulses, theory  # noqa: E402
+
 E, RHO, H = 1000.0, 1000.0, 25.0
 PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
     (0.0, 1.5): 0.982, (0.0, 2.0): 1.213, (0.2, 1.5): 0.882, (0.2, 1.2): 0.875,
@@ -35,7 +38,7 @@ def _stamp(dataset, unit, description):
 
 
 def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_over_H=2.0,
-              c_p=0.85, format_version=1, snapshots=True, periodic_connectivity=False,
+              c_p=0.85, format_version=2, snapshots=True, periodic_connectivity=False,
               t_end=1200.0):
     import h5py
 
@@ -71,13 +74,17 @@ def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_ov
         attrs = dict(format_version=format_version, creator="slidewave",
                      slidewave_version="0.0.0-test", git_commit="synthetic", call="synthetic",
                      created_utc="2024-01-01T00:00:00Z", config=json.dumps(config), complete=1,
-                     end_reason="t_end", E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s, c_l=c_l,
-                     p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
-                     n_steps_done=len(tg) - 1, t_onset_estimate=onset, u_x_preshear=0.09)
-        attrs["lambda"] = lam
+                     end_reason="t_end", n_steps_done=len(tg) - 1)
         for key, value in attrs.items():
             file.attrs[key] = value
-        file.create_dataset("/setup/config_input", data=json.dumps(config))
+        # format_version 2: the derived constants and the verbatim input are /setup attributes.
+        setup = dict(config_input=json.dumps(config), E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s,
+                     c_l=c_l, p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
+                     t_onset_estimate=onset, u_x_preshear=0.09, opening_threshold=0.01 * 0.001 * H)
+        setup["lambda"] = lam
+        group = file.create_group("setup")
+        for key, value in setup.items():
+            group.attrs[key] = value
         interface = {"x": (x, "m", "node positions"), "t": (t, "s", "output times"),
                      "slip_velocity": (slip_velocity, "m/s", "slip rate"),
                      "slip": (np.cumsum(slip_velocity, axis=0) * 4 * dt, "m", "slip"),
@@ -136,7 +143,7 @@ def category_of(nu, f):
 def metrics_rows():
     rows = []
     base = dict(V0_over_cs=1e-5, lambda_over_H=2.0, elements_per_H=32, rho=1000.0,
-                integration="reduced")
+                integration="reduced", Uy_over_H=-0.001, preshear_ratio=0.95, hht_alpha=0.1)
 
     def row(nu, f, **over):
         c_s, c_l = speeds(nu)
@@ -160,16 +167,42 @@ def metrics_rows():
                  dissipative_friction_opening=0.2 * f if opening else None,
                  dissipative_friction_before_opening=0.9 * f,
                  friction_energy_share_opening=0.5 if opening else None,
-                 dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json")
+                 dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
+                 below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, run_complete=True,
+                 pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
+                 localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
+                 first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
+                 first_drop_bottom_T_over_N=-0.3 if "inversion" in category else 0.6,
+                 later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1)
+        r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
+        # What `analysis aggregate` adds to all_metrics.csv.
+        r.update(aggregate.derived_columns(r, flutter_boundary()))
         return r
 
-    rows += [row(nu, f) for nu in NUS for f in FS]
-    rows += [row(0.2, 1.5, lambda_over_H=lh) for lh in (4.0, 6.0)]
-    rows += [row(0.2, 1.5, elements_per_H=n) for n in (16, 64, 128)]
-    rows += [row(0.2, 1.5, rho=r) for r in (0.1, 10.0)]
-    rows += [row(0.2, 1.5, V0_over_cs=v) for v in (1e-6, 5e-6, 5e-5, 1e-4)]
-    rows += [row(0.2, 1.5, dt_times_cs=d) for d in (0.25, 1.0)]
-    return rows
+    return [row(nu, f, **{parameter: value} if parameter else {})
+            for parameter, values in SWEEPS.items() for value in values for nu, f in
+            (((nu, f) for nu in NUS for f in FS) if parameter is None else [(0.2, 1.5)])]
+
+
+# The grid (parameter None), then one-parameter sweeps at nu = 0.2, f = 1.5: parameter -> values
+# besides the grid's (the roles of paper/make_numbers.py).
+SWEEPS = {None: [None], "lambda_over_H": (4.0, 6.0), "elements_per_H": (16, 64, 128), "rho": (0.1, 10.0),
+          "V0_over_cs": (1e-6, 5e-6, 5e-5, 1e-4), "dt_times_cs": (0.25, 1.0)}
+ROLES = {"period": "lambda_over_H", "mesh": "elements_per_H", "density": "rho", "shear_rate": "V0_over_cs",
+         "timestep": "dt_times_cs"}
+
+
+def write_sweeps(folder, rows):
+    """grid_metrics.csv (one run per (nu, f)) and sweep_<role>.csv (the grid's nu = 0.2, f = 1.5 run
+    and the runs varying the role's parameter), as `analysis aggregate` writes each sweep's table."""
+    n_grid = len(NUS) * len(FS)
+    write_csv(folder / "grid_metrics.csv", rows[:n_grid])
+    reference = [r for r in rows[:n_grid] if (r["nu"], r["f"]) == (0.2, 1.5)]
+    start = n_grid
+    for parameter, values in list(SWEEPS.items())[1:]:
+        role = next(name for name, p in ROLES.items() if p == parameter)
+        write_csv(folder / f"sweep_{role}.csv", reference + rows[start:start + len(values)])
+        start += len(values)
 
 
 def write_csv(path, rows, drop=()):
@@ -189,7 +222,7 @@ def table1_rows():
         regime = lambda c: "supersonic" if abs(c) > c_l else "intersonic"  # noqa: E731
         row = dict(nu=nu, f=f, celerity=regenerated, published=published, deviation_rel=None,
                    regime=None, published_regime=regime(published), sign_match=None,
-                   regime_match=None, within_tol=None, category=category_of(nu, f))
+                   regime_match=None, within_tol=None, category=category_of(nu, f), end_reason=None)
         if regenerated is not None:
             deviation = (regenerated - published) / abs(published)
             row.update(deviation_rel=deviation, regime=regime(regenerated),
@@ -215,6 +248,12 @@ FLUTTER = """# nu f_lower f_upper
 """
 
 
+def flutter_boundary():
+    """FLUTTER as aggregate.read_flutter returns it."""
+    return [tuple(float(x) for x in line.split()) for line in FLUTTER.splitlines()
+            if line.strip() and not line.startswith("#")]
+
+
 def write_all(folder):
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
@@ -222,6 +261,7 @@ def write_all(folder):
     for v in (1e-6, 1e-4):
         write_run(folder / f"run_v{v:g}.h5", v0_over_cs=v, snapshots=False)
     write_csv(folder / "all_metrics.csv", metrics_rows())
+    write_sweeps(folder, metrics_rows())
     write_csv(folder / "table1.csv", table1_rows())
     (folder / "flutter.txt").write_text(FLUTTER)
     (folder / "metrics.json").write_text(json.dumps(

@@ -3,10 +3,15 @@
 import re
 import shutil
 import subprocess
+import sys
 
 import pytest
 
+import synthetic
 from figure_support import PAPER, command
+
+sys.path.insert(0, str(PAPER))
+from numbers_tex import MACRO_NAMES  # noqa: E402
 
 LATEXMK = shutil.which("latexmk")
 needs_latex = pytest.mark.skipif(LATEXMK is None, reason="latexmk not installed "
@@ -40,10 +45,20 @@ def expected_figures():
     return names
 
 
+def numbers_args(data, **replace):
+    """make_numbers.py's options as the rule `paper_numbers` passes them, on the synthetic study."""
+    options = {"--summary": data / "summary.json", "--runs": data / "all_metrics.csv",
+               "--grid": data / "grid_metrics.csv", "--table1": data / "table1.csv", **replace}
+    args = [item for pair in options.items() for item in pair]
+    args += ["--reference-cell", "0.2", "1.5"]
+    for role, parameter in synthetic.ROLES.items():
+        args += ["--sweep", role, parameter, data / f"sweep_{role}.csv"]
+    return args
+
+
 def test_numbers_from_the_study(data, tmp_path):
     out = tmp_path / "numbers.tex"
-    result = command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
-                     "--table1", data / "table1.csv", "--flutter", data / "flutter.txt", "-o", out)
+    result = command(PAPER / "make_numbers.py", *numbers_args(data), "-o", out)
     assert result.returncode == 0, result.stderr
     m = macros(out)
     assert m["cellsTotal"] == r"\ensuremath{38}"
@@ -52,25 +67,43 @@ def test_numbers_from_the_study(data, tmp_path):
     assert m["dtTimesCs"] == r"\ensuremath{0.5}"
     assert m["tolerancePercent"] == r"\ensuremath{5}"
     assert m["medianDeviationPercent"] == r"\ensuremath{4.1}"
-    assert m["nGridPoints"] == r"\ensuremath{98}"
+    assert m["nGridPoints"] == r"\ensuremath{98}" and m["nRuns"] == r"\ensuremath{111}"
     assert m["publishedReference"] == r"\ensuremath{0.882}"
     assert m["pulseCountsPeriod"].count("ensuremath") == 3
+    assert m["periodRatios"] == r"\ensuremath{2}, \ensuremath{4}, \ensuremath{6}"
+    assert m["celerityMesh"].count("ensuremath") == 2 * 4  # H/16, 32, 64, 128: value (mesh) each
     assert m["nSupersonicBackward"] == r"\ensuremath{2}"
+    assert set(m) == set(MACRO_NAMES)
     used = set(re.findall(r"\\(\w+)", (PAPER / "reproduction.tex").read_text()))
     assert "notavailable" not in "".join(m[k] for k in m if k in used)
 
 
-def test_numbers_placeholders_and_bad_input(tmp_path):
-    result = command(PAPER / "make_numbers.py", "-o", tmp_path / "n.tex")
-    assert result.returncode == 0
-    assert macros(tmp_path / "n.tex")["cellsWithin"] == r"\notavailable"
-    (tmp_path / "m.csv").write_text("nu,f\n0.2,1.5\n")
-    result = command(PAPER / "make_numbers.py", tmp_path / "s.json", "-o", tmp_path / "x.tex")
+def test_a_missing_number_is_an_error(data, tmp_path):
+    # The grid lacks the derived column inside_flutter_wedge (an all_metrics.csv from before it).
+    rows = (data / "grid_metrics.csv").read_text().splitlines()
+    column = rows[0].split(",").index("inside_flutter_wedge")
+    (tmp_path / "grid.csv").write_text("\n".join(",".join(c for i, c in enumerate(line.split(",")) if i != column)
+                                                 for line in rows) + "\n")
+    result = command(PAPER / "make_numbers.py", *numbers_args(data, **{"--grid": tmp_path / "grid.csv"}),
+                     "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "inside_flutter_wedge" in result.stderr
+    assert not (tmp_path / "x.tex").exists()
+    # A sweep must give one run per value of its parameter, and at least two values.
+    result = command(PAPER / "make_numbers.py", *numbers_args(data), "--sweep", "mesh", "rho",
+                     data / "sweep_mesh.csv", "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "two runs with rho = 1000 at the reference cell" in result.stderr
+    rows = (data / "sweep_mesh.csv").read_text().splitlines()
+    (tmp_path / "one.csv").write_text("\n".join(rows[:2]) + "\n")
+    result = command(PAPER / "make_numbers.py", *numbers_args(data), "--sweep", "mesh", "elements_per_H",
+                     tmp_path / "one.csv", "-o", tmp_path / "x.tex")
+    assert result.returncode == 2 and "sweep 'mesh' has 1 value(s) of elements_per_H" in result.stderr
+    result = command(PAPER / "make_numbers.py", *numbers_args(data, **{"--summary": tmp_path / "s.json"}),
+                     "-o", tmp_path / "x.tex")
     assert result.returncode == 2 and "cannot read" in result.stderr
     (tmp_path / "s.json").write_text("{}")
-    result = command(PAPER / "make_numbers.py", tmp_path / "s.json", tmp_path / "m.csv",
+    result = command(PAPER / "make_numbers.py", *numbers_args(data, **{"--summary": tmp_path / "s.json"}),
                      "-o", tmp_path / "x.tex")
-    assert result.returncode == 2 and "missing required column(s) category" in result.stderr
+    assert result.returncode == 2 and "no number under 'cells_total'" in result.stderr
 
 
 def test_table1(data, tmp_path):
@@ -122,9 +155,7 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
         assert status == 0, name
         for ext in ("png", "pdf"):
             shutil.copy(f"{prefix}.{ext}", gen / f"{name}.{ext}")
-    assert command(PAPER / "make_numbers.py", data / "summary.json", data / "all_metrics.csv",
-                   "--table1", data / "table1.csv", "--flutter", data / "flutter.txt",
-                   "-o", gen / "numbers.tex").returncode == 0
+    assert command(PAPER / "make_numbers.py", *numbers_args(data), "-o", gen / "numbers.tex").returncode == 0
     assert command(PAPER / "make_table1.py", data / "table1.csv",
                    "-o", gen / "table1.tex").returncode == 0
     assert command(PAPER / "make_variants.py", f"default={data / 'summary.json'}",
@@ -134,7 +165,8 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
     assert not (gen / "bad.tex").exists()
     for name, table in study_tables().items():  # every table of the study config, from the synthetic study
         if table.get("resolution"):
-            args = ["make_resolution_table.py", f"H/32={data / 'table1.csv'}", f"H/64={data / 'table1.csv'}"]
+            args = ["make_resolution_table.py", f"H/32={data / 'table1.csv'}", f"H/64={data / 'table1.csv'}",
+                    "--tolerance", "0.05"]
         else:
             args = ["make_sweep_table.py", f"all={data / 'all_metrics.csv'}", "--columns", *table["columns"]]
         assert command(PAPER / args[0], *args[1:], "-o", gen / f"{name}.tex").returncode == 0, name
@@ -146,3 +178,19 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
         text = subprocess.run(["pdftotext", str(paper / "reproduction.pdf"), "-"],
                               capture_output=True, text=True).stdout
         assert "not generated yet" not in text and "n/a" not in text
+
+
+def test_table1_flags_a_run_that_did_not_complete(data, tmp_path):
+    lines = (data / "table1.csv").read_text().splitlines()
+    header = lines[0].split(",")
+    row = next(i for i, line in enumerate(lines) if line.startswith("0.2,1.5,"))
+    cells = lines[row].split(",")
+    cells[header.index("end_reason")] = "contact_not_converged"
+    lines[row] = ",".join(cells)
+    (tmp_path / "table1.csv").write_text("\n".join(lines) + "\n")
+    out = tmp_path / "table1.tex"
+    assert command(PAPER / "make_table1.py", tmp_path / "table1.csv", "-o", out).returncode == 0
+    text = out.read_text()
+    assert text.count("$^{*}$") == 2 and "run did not complete: contact not converged" in text  # mark, note
+    assert command(PAPER / "make_table1.py", data / "table1.csv", "-o", out).returncode == 0
+    assert "did not complete" not in out.read_text()

@@ -5,6 +5,7 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -69,6 +70,19 @@ T read_number_attribute(hid_t object, const char* name) {
   return value;
 }
 
+std::vector<std::string> attribute_names(hid_t object) {
+  std::vector<std::string> names;
+  hsize_t index = 0;
+  H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index,
+              [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
+                static_cast<std::vector<std::string>*>(out)->push_back(name);
+                return 0;
+              },
+              &names);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 std::vector<hsize_t> dataset_shape(hid_t file, const std::string& path) {
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
   if (set < 0) return {};
@@ -130,7 +144,7 @@ TEST(RunFile, RoundTripWithProvenance) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   // Provenance and run attributes.
-  EXPECT_EQ(read_number_attribute<long long>(file, "format_version"), 1);
+  EXPECT_EQ(read_number_attribute<long long>(file, "format_version"), 2);
   EXPECT_EQ(read_string_attribute(file, "creator"), "slidewave");
   EXPECT_EQ(read_string_attribute(file, "slidewave_version"), kVersion);
   const std::string commit = read_string_attribute(file, "git_commit");
@@ -142,22 +156,35 @@ TEST(RunFile, RoundTripWithProvenance) {
   const auto resolved = nlohmann::json::parse(read_string_attribute(file, "config"));
   EXPECT_EQ(resolved, config.to_json());
   EXPECT_EQ(parse_run_config(resolved).to_json(), config.to_json()) << "the resolved config reruns the run";
-  {
-    const hid_t setup = H5Gopen2(file, "setup", H5P_DEFAULT);
-    ASSERT_GE(setup, 0);
-    EXPECT_EQ(read_string_attribute(setup, "config_input"), kInput) << "verbatim input";
-    H5Gclose(setup);
-  }
   EXPECT_EQ(read_number_attribute<long long>(file, "complete"), 1);
   EXPECT_EQ(read_string_attribute(file, "end_reason"), "t_end");
   EXPECT_EQ(read_number_attribute<long long>(file, "n_steps_done"), rec.n_steps_done);
+  EXPECT_EQ(read_number_attribute<double>(file, "t_first_opening"), rec.t_first_opening);
+  // /setup: the verbatim input and every derived constant, as attributes (format 2: not at the root).
+  const hid_t setup = H5Gopen2(file, "setup", H5P_DEFAULT);
+  ASSERT_GE(setup, 0);
+  EXPECT_EQ(read_string_attribute(setup, "config_input"), kInput) << "verbatim input";
   const DerivedConstants d = config.derived();
   const struct { const char* name; double value; } numbers[] = {
       {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},
       {"lambda", d.lambda}, {"h", d.h}, {"f", config.friction.f}, {"c_s", d.c_s}, {"c_l", d.c_l}, {"p0", d.p0},
       {"V0", d.V0}, {"dt", d.dt}, {"t_end", config.time.t_end}, {"hht_alpha", config.time.hht_alpha},
-      {"t_onset_estimate", d.t_onset_estimate}, {"u_x_preshear", rec.u_x_preshear}};
-  for (const auto& n : numbers) EXPECT_EQ(read_number_attribute<double>(file, n.name), n.value) << n.name;
+      {"t_onset_estimate", d.t_onset_estimate}, {"u_x_preshear", rec.u_x_preshear},
+      {"opening_threshold", opening_threshold(config)}};
+  std::vector<std::string> setup_names{"config_input"};
+  for (const auto& n : numbers) {
+    EXPECT_EQ(read_number_attribute<double>(setup, n.name), n.value) << n.name;
+    setup_names.push_back(n.name);
+  }
+  std::sort(setup_names.begin(), setup_names.end());
+  EXPECT_EQ(attribute_names(setup), setup_names);
+  const std::vector<std::string> root_names{"call", "complete", "config", "created_utc", "creator", "end_reason",
+                                            "format_version", "git_commit", "n_steps_done", "slidewave_version",
+                                            "t_first_opening"};
+  EXPECT_EQ(attribute_names(file), root_names) << "the root keeps provenance and outcome only";
+  EXPECT_EQ(rec.opening_threshold, opening_threshold(config)) << "the threshold the loop used";
+  EXPECT_EQ(read_number_attribute<double>(setup, "opening_threshold"), 1e-2 * 0.001 * 25.0);
+  H5Gclose(setup);
 
   // Interface series: (n_out, n_c), values bit for bit.
   const hsize_t n_out = rec.interface.t.size(), n_c = rec.interface.x.size();

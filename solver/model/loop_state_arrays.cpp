@@ -1,0 +1,86 @@
+#include "model/loop_state_arrays.hpp"
+
+#include <stdexcept>
+
+namespace slidewave {
+namespace {
+
+/// The vectors of the state by name (the same list writes and reads them).
+template <typename State, typename F>
+void for_each_vector(State& loop, F&& visit) {
+  visit("u", loop.dynamics.u);
+  visit("v", loop.dynamics.v);
+  visit("acc", loop.dynamics.acc);
+  visit("Ku", loop.dynamics.Ku);
+  visit("Mu_f", loop.dynamics.Mu_f);
+  visit("Mv_f", loop.dynamics.Mv_f);
+  visit("Ma_f", loop.dynamics.Ma_f);
+  visit("r", loop.dynamics.r);
+  visit("F_top", loop.energy.F_top);
+  visit("u_contact_start", loop.recording.u_contact_start);
+}
+
+const std::vector<double>& find_reals(const StateArrays& a, const std::string& name, std::size_t size) {
+  const auto found = a.reals.find(name);
+  if (found == a.reals.end()) throw std::runtime_error("checkpoint: no array " + name);
+  if (found->second.size() != size)
+    throw std::runtime_error("checkpoint: " + name + " has " + std::to_string(found->second.size()) +
+                             " values, this model " + std::to_string(size));
+  return found->second;
+}
+
+const std::vector<std::int64_t>& find_integers(const StateArrays& a, const std::string& name, std::size_t size) {
+  const auto found = a.integers.find(name);
+  if (found == a.integers.end()) throw std::runtime_error("checkpoint: no array " + name);
+  if (found->second.size() != size)
+    throw std::runtime_error("checkpoint: " + name + " has " + std::to_string(found->second.size()) +
+                             " values, this model " + std::to_string(size));
+  return found->second;
+}
+
+const char* const kEndReasons[] = {"t_end", "stop_after_opening"};
+
+}  // namespace
+
+StateArrays to_arrays(const LoopState& loop) {
+  StateArrays a;
+  for_each_vector(loop, [&](const char* name, const Eigen::VectorXd& v) {
+    a.reals[name].assign(v.data(), v.data() + v.size());
+  });
+  a.reals["friction"] = loop.friction.per_node;
+  a.reals["scalars"] = {loop.t_end, loop.energy.energy_start, loop.energy.work_external,
+                        loop.energy.dissipation_friction, loop.energy.work_contact_normal,
+                        loop.recording.t_first_opening};
+  auto& contact = a.integers["contact"];
+  for (const ContactState s : loop.contact) contact.push_back(static_cast<std::int64_t>(s));
+  std::int64_t end_reason = -1;
+  for (std::int64_t k = 0; k < 2; ++k)
+    if (loop.end_reason == kEndReasons[k]) end_reason = k;
+  if (end_reason < 0) throw std::runtime_error("checkpoint: unknown end_reason " + loop.end_reason);
+  a.integers["counters"] = {loop.step, static_cast<std::int64_t>(loop.recording.next_snapshot), end_reason};
+  return a;
+}
+
+void restore_from_arrays(const StateArrays& a, LoopState& loop) {
+  for_each_vector(loop, [&](const char* name, Eigen::VectorXd& v) {
+    const auto& values = find_reals(a, name, static_cast<std::size_t>(v.size()));
+    std::copy(values.begin(), values.end(), v.data());
+  });
+  loop.friction.per_node = find_reals(a, "friction", loop.friction.per_node.size());
+  const auto& scalars = find_reals(a, "scalars", 6);
+  loop.t_end = scalars[0];
+  loop.energy.energy_start = scalars[1];
+  loop.energy.work_external = scalars[2];
+  loop.energy.dissipation_friction = scalars[3];
+  loop.energy.work_contact_normal = scalars[4];
+  loop.recording.t_first_opening = scalars[5];
+  const auto& contact = find_integers(a, "contact", loop.contact.size());
+  for (std::size_t k = 0; k < contact.size(); ++k) loop.contact[k] = static_cast<ContactState>(contact[k]);
+  const auto& counters = find_integers(a, "counters", 3);
+  if (counters[2] < 0 || counters[2] > 1) throw std::runtime_error("checkpoint: bad end_reason code");
+  loop.step = counters[0];
+  loop.recording.next_snapshot = static_cast<std::size_t>(counters[1]);
+  loop.end_reason = kEndReasons[counters[2]];
+}
+
+}  // namespace slidewave

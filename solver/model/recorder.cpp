@@ -1,0 +1,142 @@
+#include "model/recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slidewave {
+
+double opening_threshold(const RunConfig& config) {
+  return 1e-2 * std::fabs(config.loading.Uy_over_H) * config.geometry.H;
+}
+
+namespace {
+
+/// The unwrapped mesh of the snapshots: the column i = n_x repeats i = 0, so that the file mesh is not periodic.
+SnapshotMesh snapshot_mesh(const LayerMesh& mesh) {
+  SnapshotMesh out;
+  const int n_x = mesh.n_x;
+  for (int j = 0; j <= mesh.n_y; ++j)
+    for (int i = 0; i <= n_x; ++i) {
+      out.coordinates.push_back(i * mesh.h);
+      out.coordinates.push_back(j * mesh.h);
+    }
+  for (int j = 0; j < mesh.n_y; ++j)
+    for (int i = 0; i < n_x; ++i) {
+      const std::int64_t n0 = j * (n_x + 1) + i;
+      for (std::int64_t n : {n0, n0 + 1, n0 + n_x + 2, n0 + n_x + 1}) out.connectivity.push_back(n);
+    }
+  return out;
+}
+
+}  // namespace
+
+Recorder::Recorder(const LayerModel& m, const EnergyLedger& ledger, const PreloadState& preload)
+    : model_(m), ledger_(ledger), dt_(m.d.dt), opening_threshold_(opening_threshold(m.config)),
+      snapshot_times_(m.config.output.snapshot_times) {
+  std::sort(snapshot_times_.begin(), snapshot_times_.end());
+  const int n_nodes_c = m.mesh.n_contact();
+  auto& s = record_.interface;
+  for (auto* series : {&s.slip_velocity, &s.slip, &s.opening, &s.normal_traction, &s.tangential_traction})
+    series->n_cols = n_nodes_c;
+  s.state.n_cols = n_nodes_c;
+  for (int k = 0; k < n_nodes_c; ++k) s.x.push_back(k * m.d.h);
+  record_.snapshot_mesh = snapshot_mesh(m.mesh);
+  record_.u_x_preshear = preload.u_x_top;
+  record_.static_contact_iterations = preload.contact_iterations;
+  record_.opening_threshold = opening_threshold_;
+}
+
+void Recorder::record_start(LoopState& loop, int contact_iterations) {
+  const Eigen::VectorXd& u = loop.dynamics.u;
+  loop.recording = RecorderState{u.head(model_.n_contact_dofs), 0, -1};
+  record_global(0, loop, contact_iterations, 0);
+  record_interface(0, loop, u);
+  record_due_snapshots(0, loop);
+}
+
+void Recorder::record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report) {
+  const double t = loop.step * dt_;
+  record_global(t, loop, report.iterations, report.residual);
+  if (loop.step % model_.config.output.interface_stride == 0) record_interface(t, loop, u_previous);
+  record_due_snapshots(t, loop);
+}
+
+bool Recorder::detect_first_opening(LoopState& loop) {
+  if (loop.recording.t_first_opening >= 0) return false;
+  const Eigen::VectorXd& u = loop.dynamics.u;
+  for (int k = 0; k < model_.mesh.n_contact(); ++k)
+    if (u(2 * k + 1) > opening_threshold_) {
+      loop.recording.t_first_opening = loop.step * dt_;
+      return true;
+    }
+  return false;
+}
+
+RunRecord Recorder::finish(const LoopState& loop, bool complete, const std::string& end_reason) {
+  record_.complete = complete;
+  record_.end_reason = end_reason;
+  record_.n_steps_done = loop.step;
+  record_.t_first_opening = loop.recording.t_first_opening;
+  return std::move(record_);
+}
+
+void Recorder::record_global(double t, const LoopState& loop, int contact_iterations, double contact_residual) {
+  const Eigen::VectorXd& r = loop.dynamics.r;
+  double T = 0, N = 0;
+  for (int k = 0; k < model_.mesh.n_contact(); ++k) {
+    T -= r(2 * k);
+    N += r(2 * k + 1);
+  }
+  const double e_kin = ledger_.kinetic(loop.dynamics), e_el = ledger_.elastic(loop.dynamics);
+  const EnergySums& e = loop.energy;
+  auto& g = record_.global;
+  g.t.push_back(t);
+  g.T.push_back(T);
+  g.N.push_back(N);
+  last_T_over_N_ = N > 0 ? T / N : std::nan("");
+  g.T_over_N.push_back(last_T_over_N_);
+  g.energy_kinetic.push_back(e_kin);
+  g.energy_elastic.push_back(e_el);
+  g.work_external.push_back(e.work_external);
+  g.dissipation_friction.push_back(e.dissipation_friction);
+  g.work_contact_normal.push_back(e.work_contact_normal);
+  g.energy_balance_residual.push_back(ledger_.balance_residual(e_kin, e_el, e));
+  g.contact_iterations.push_back(contact_iterations);
+  g.contact_residual.push_back(contact_residual);
+}
+
+void Recorder::record_interface(double t, const LoopState& loop, const Eigen::VectorXd& u_previous) {
+  const Eigen::VectorXd &u = loop.dynamics.u, &r = loop.dynamics.r;
+  const Eigen::VectorXd& u_contact_start = loop.recording.u_contact_start;
+  const double h = model_.d.h;
+  auto& s = record_.interface;
+  s.t.push_back(t);
+  for (int k = 0; k < model_.mesh.n_contact(); ++k) {
+    s.slip_velocity.data.push_back((u(2 * k) - u_previous(2 * k)) / dt_);
+    s.slip.data.push_back(u(2 * k) - u_contact_start(2 * k));
+    s.opening.data.push_back(u(2 * k + 1));
+    s.normal_traction.data.push_back(r(2 * k + 1) / h);
+    s.tangential_traction.data.push_back(-r(2 * k) / h);
+    s.state.data.push_back(static_cast<std::int8_t>(loop.contact[k]));
+  }
+}
+
+void Recorder::record_due_snapshots(double t, LoopState& loop) {
+  auto& next = loop.recording.next_snapshot;
+  while (next < snapshot_times_.size() && t >= snapshot_times_[next] - 0.5 * dt_) {
+    Snapshot snap{t, {}, {}};
+    const Eigen::VectorXd &u = loop.dynamics.u, &v = loop.dynamics.v;
+    for (int j = 0; j <= model_.mesh.n_y; ++j)
+      for (int i = 0; i <= model_.mesh.n_x; ++i) {  // i = n_x repeats i = 0 (see snapshot_mesh)
+        const int node = model_.mesh.node(i, j);
+        for (int c = 0; c < 2; ++c) {
+          snap.displacement.push_back(u(2 * node + c));
+          snap.velocity.push_back(v(2 * node + c));
+        }
+      }
+    record_.snapshots.push_back(std::move(snap));
+    ++next;
+  }
+}
+
+}  // namespace slidewave

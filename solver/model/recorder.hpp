@@ -1,0 +1,58 @@
+#pragma once
+// Recording and diagnostics of the dynamic stage: the one place that appends output rows (the layout of
+// run.h5, docs/contracts.md section 2). Called by the loop of model/simulation.cpp after every step:
+//   /global     every step: forces T, N, T/N, energies (model/energy_ledger.hpp), contact sweeps;
+//   /interface  every output.interface_stride steps: slip velocity, slip, opening, tractions, states;
+//   /snapshots  the bulk fields at output.snapshot_times (the first step at or after each, within dt/2);
+// and it watches for the first opening of the interface (which drives time.stop_after_opening).
+// The rows go into an in-memory RunRecord that finish() hands over (or that a streaming writer drains
+// as the run goes, through rows()).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "contact/gauss_seidel.hpp"
+#include "model/energy_ledger.hpp"
+#include "model/layer_model.hpp"
+#include "model/loop_state.hpp"
+#include "model/run_record.hpp"
+
+namespace slidewave {
+
+/// Threshold above which a contact node counts as open (m): 1 % of the preload displacement |Uy|
+/// (the same as analysis/opening.py, which documents the evidence for it). Written to /setup.
+double opening_threshold(const RunConfig& config);
+
+class Recorder {
+ public:
+  /// Keeps references to model and ledger (they must outlive the recorder).
+  Recorder(const LayerModel& model, const EnergyLedger& ledger, const PreloadState& preload);
+
+  /// Rows at t = 0, before the first step; initializes loop.recording.
+  void record_start(LoopState& loop, int contact_iterations);
+  /// Rows of the step just done (t = loop.step dt); u_previous: all DOFs one step before.
+  void record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report);
+  /// True at the first step at which a contact node opens more than opening_threshold (then records its time).
+  bool detect_first_opening(LoopState& loop);
+  /// Last apparent friction T/N recorded (for progress reports).
+  double last_T_over_N() const { return last_T_over_N_; }
+  /// The rows recorded so far, which an observer may move elsewhere (model/run_observer.hpp).
+  RunRecord& rows() { return record_; }
+
+  /// The record, with the outcome of the run: n_steps_done = loop.step.
+  RunRecord finish(const LoopState& loop, bool complete, const std::string& end_reason);
+
+ private:
+  void record_global(double t, const LoopState& loop, int contact_iterations, double contact_residual);
+  void record_interface(double t, const LoopState& loop, const Eigen::VectorXd& u_previous);
+  void record_due_snapshots(double t, LoopState& loop);
+
+  const LayerModel& model_;
+  const EnergyLedger& ledger_;
+  double dt_, opening_threshold_;
+  std::vector<double> snapshot_times_;  ///< sorted
+  RunRecord record_;
+  double last_T_over_N_ = 0;
+};
+
+}  // namespace slidewave

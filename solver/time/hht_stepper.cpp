@@ -1,0 +1,84 @@
+#include "time/hht_stepper.hpp"
+
+namespace slidewave {
+
+Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system) {
+  return hht.mass_factor() * system.M_ff + (1 - hht.alpha) * system.K_ff;
+}
+
+HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
+                       std::unique_ptr<LinearSolver> K_eff)
+    : system_(system),
+      hht_(hht),
+      w_(alpha_weighted ? 1 - hht.alpha : 1.0),
+      w_previous_(alpha_weighted ? hht.alpha : 0.0),
+      K_eff_(std::move(K_eff)) {
+  const int n_f = system.n_free, n = system.n_free + system.n_prescribed;
+  u_tilde_.resize(n_f);
+  Mu_tilde_.resize(n_f);
+  rhs_.resize(n_f);
+  u_free_.resize(n_f);
+  u_work_.resize(n);
+  Ku_next_.resize(n);
+  Ma_next_.resize(n_f);
+}
+
+HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
+                                   const LinearSolver& M_ff) const {
+  const int n_f = system_.n_free, n_c = system_.n_contact;
+  HHTState s;
+  s.u = u;
+  s.v = v;
+  s.r = r;
+  s.Ku = system_.K * u;
+  Eigen::VectorXd rhs = -s.Ku.head(n_f);
+  rhs.head(n_c) += r;
+  s.acc = Eigen::VectorXd::Zero(u.size());
+  s.acc.head(n_f) = M_ff.solve(rhs);
+  s.Mu_f = system_.M_ff_rows * u.head(n_f);
+  s.Mv_f = system_.M_ff_rows * v.head(n_f);
+  s.Ma_f = -s.Ku.head(n_f);
+  s.Ma_f.head(n_c) += r;
+  return s;
+}
+
+void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
+  const int n_f = system_.n_free, n_c = system_.n_contact;
+  const double a = hht_.alpha, dt = hht_.dt;
+  u_d_next_ = u_d_next;
+  u_tilde_ = s.u.head(n_f) + dt * s.v.head(n_f) + dt * dt * (0.5 - hht_.beta) * s.acc.head(n_f);
+  Mu_tilde_ = s.Mu_f + dt * s.Mv_f + dt * dt * (0.5 - hht_.beta) * s.Ma_f;
+  rhs_.noalias() = hht_.mass_factor() * Mu_tilde_;
+  rhs_.noalias() -= (1 - a) * (system_.K_fd * u_d_next);
+  rhs_.noalias() -= a * s.Ku.head(n_f);
+  if (w_previous_ != 0) rhs_.head(n_c) += w_previous_ * s.r;
+}
+
+const Eigen::VectorXd& HHTStepper::solve_free() {
+  K_eff_->solve_into(rhs_, u_free_);
+  return u_free_;
+}
+
+void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
+  const int n_f = system_.n_free, n_c = system_.n_contact, n_d = system_.n_prescribed;
+  const double a = hht_.alpha, dt = hht_.dt;
+  rhs_.head(n_c) += w_ * r_next;
+  K_eff_->solve_into(rhs_, u_work_.head(n_f));
+  u_work_.tail(n_d) = u_d_next_;
+  const Eigen::VectorXd acc_f_next = hht_.mass_factor() * (u_work_.head(n_f) - u_tilde_);
+  s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next);
+  s.acc.head(n_f) = acc_f_next;
+
+  Ku_next_.noalias() = system_.K * u_work_;
+  Ma_next_ = -(1 - a) * Ku_next_.head(n_f) - a * s.Ku.head(n_f);
+  Ma_next_.head(n_c) += w_ * r_next + w_previous_ * s.r;
+  s.Mv_f += dt * ((1 - hht_.gamma) * s.Ma_f + hht_.gamma * Ma_next_);
+  s.Mu_f = Mu_tilde_ + hht_.beta * dt * dt * Ma_next_;
+  s.Ma_f.swap(Ma_next_);  // Ma_next_ is rewritten whole by the next step
+  s.u.swap(u_work_);  // u_work_ keeps u(n): u_previous()
+  r_previous_.swap(s.r);
+  s.r = r_next;
+  s.Ku.swap(Ku_next_);
+}
+
+}  // namespace slidewave

@@ -1,0 +1,86 @@
+#pragma once
+// One HHT step (time/hht.hpp) of a linear second-order system with contact forces,
+//     M a + K u = C^T r,
+// split into a predictor, a free solve and a correction, so that the contact forces r(n+1) can be solved
+// between the free solve and the correction (the loop of model/simulation.cpp):
+//     predictor  u~ = u + dt v + dt^2 (1/2 - beta) a                  (free DOFs)
+//     free solve K_eff u_free = M u~ / (beta dt^2) - (1-a) K_fd u_d(n+1) - a K u(n) + a' C^T r(n)
+//     correction K_eff u(n+1) = (same right-hand side) + w C^T r(n+1),   i.e. u_free + w Z r(n+1)
+// with K_eff = M_ff / (beta dt^2) + (1-a) K_ff, and w = 1-a, a' = a for "alpha" weighting (contact forces
+// weighted like external forces) or w = 1, a' = 0 for "end" weighting.
+//
+// DOF layout: the n_free free DOFs first, of which the first n_contact carry the contact forces C^T r
+// (C picks them), then the n_prescribed DOFs whose displacement u_d is imposed. The prescribed DOFs must
+// move at constant velocity (a = 0): the inertia coupling M_fd a_d is not in the equations.
+//
+// The mass products M_ff u, M_ff v, M_ff a of the free rows are carried through the step by the Newmark
+// relations and the equation of motion (M_ff a(n+1) follows from K u(n+1), K u(n) and the contact forces),
+// so that K u is the only full sparse product of a step.
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <memory>
+
+#include "linalg/linear_solver.hpp"
+#include "time/hht.hpp"
+
+namespace slidewave {
+
+/// The matrices of the system, partitioned as above (the stepper keeps references: they must outlive it).
+struct PartitionedSystem {
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& K;          ///< all DOFs
+  const Eigen::SparseMatrix<double>& K_ff;                        ///< free-free block
+  const Eigen::SparseMatrix<double>& M_ff;                        ///< free-free block
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& M_ff_rows;  ///< M_ff, row-major (products)
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& K_fd;       ///< free-prescribed block
+  int n_free, n_prescribed, n_contact;
+};
+
+/// Everything the step carries from one time to the next (a checkpoint of the dynamics).
+struct HHTState {
+  Eigen::VectorXd u, v, acc;  ///< displacement, velocity, acceleration (all DOFs; acc = 0 on prescribed)
+  Eigen::VectorXd Ku;         ///< K u (all DOFs)
+  Eigen::VectorXd Mu_f, Mv_f, Ma_f;  ///< M_ff u_f, M_ff v_f, M_ff a_f (free rows)
+  Eigen::VectorXd r;          ///< contact forces of the current time, weighted into the next step by a'
+};
+
+/// Effective matrix K_eff = M_ff / (beta dt^2) + (1 - alpha) K_ff.
+Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system);
+
+class HHTStepper {
+ public:
+  /// @param K_eff  factorization of effective_matrix(hht, system)
+  /// @param alpha_weighted  true: contact forces weighted like external forces (w = 1-a, a' = a)
+  HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
+             std::unique_ptr<LinearSolver> K_eff);
+
+  /// State at rest in the equation of motion: K u, the mass products, and the consistent acceleration
+  /// M_ff a_f = C^T r - (K u)_f (a = 0 on the prescribed DOFs).
+  /// @param M_ff  factorization of system.M_ff
+  HHTState initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
+                         const LinearSolver& M_ff) const;
+
+  /// Predictor and right-hand side of the free solve for the prescribed displacement u_d(n+1).
+  void predict(const HHTState& state, const Eigen::VectorXd& u_d_next);
+  /// Free solve (r(n+1) = 0): the result stays valid until the next predict().
+  const Eigen::VectorXd& solve_free();
+  /// Correction with the contact forces r(n+1), Newmark update: the state moves to time n+1.
+  void correct(const Eigen::VectorXd& r_next, HHTState& state);
+
+  /// Displacement and contact forces before the last correct() (time n).
+  const Eigen::VectorXd& u_previous() const { return u_work_; }
+  const Eigen::VectorXd& r_previous() const { return r_previous_; }
+
+  const LinearSolver& K_eff() const { return *K_eff_; }
+  const HHTCoefficients& coefficients() const { return hht_; }
+  /// w, the weight of r(n+1) in the equation of motion (the correction is u_free + w Z r(n+1)).
+  double contact_weight() const { return w_; }
+
+ private:
+  PartitionedSystem system_;
+  HHTCoefficients hht_;
+  double w_, w_previous_;
+  std::unique_ptr<LinearSolver> K_eff_;
+  Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, r_previous_;
+};
+
+}  // namespace slidewave

@@ -1,0 +1,85 @@
+"""analysis.aggregate: what the tables say about runs that did not complete, and the columns the
+paper and figures read instead of computing them."""
+
+import math
+
+import pytest
+
+from analysis import aggregate as agg
+from analysis.reference import ReferenceCell
+
+REFERENCE = [ReferenceCell(nu=0.2, f=1.5, celerity=2.0),
+             ReferenceCell(nu=0.0, f=1.5, celerity=1.0)]
+
+
+def metrics(nu, f, celerity, **extra):
+    return {"nu": nu, "f": f, "celerity": celerity, "category": "intersonic_opening", "regime": "intersonic",
+            "opening": True, "inversion": False, "min_T_over_N": 0.5, "run_complete": True,
+            "end_reason": "stop_after_opening", **extra}
+
+
+def test_a_run_that_did_not_complete_shows_its_end_reason_in_every_table():
+    runs = [metrics(0.2, 1.5, 2.1, run_complete=False, end_reason="contact_not_converged"),
+            metrics(0.0, 1.5, 1.0)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
+    csv_rows = files["table1.csv"].splitlines()
+    assert csv_rows[0].split(",")[-1] == "end_reason"
+    assert csv_rows[1].endswith(",contact_not_converged") and csv_rows[2].endswith(",")
+    assert "(run ended: contact_not_converged)" in files["table1.md"]
+    assert files["table1.md"].count("run ended") == 1
+    assert r"run did not complete: contact\_not\_converged" in files["table1.tex"]
+
+
+def test_complete_runs_leave_end_reason_empty_and_the_latex_without_a_note():
+    runs = [metrics(0.2, 1.5, 2.1), metrics(0.0, 1.5, 1.0, end_reason="t_end")]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
+    assert all(line.endswith(",") for line in files["table1.csv"].splitlines()[1:])
+    assert "did not complete" not in files["table1.tex"] and "run ended" not in files["table1.md"]
+
+
+# A wedge opening between nu = 0.1 and 0.3, closing at 0.4 (nan: no wedge), as flutter-boundary writes.
+BOUNDARY = [(0.0, math.nan, math.nan), (0.1, 1.0, 3.0), (0.3, 2.0, 5.0), (0.4, math.nan, math.nan)]
+
+
+@pytest.mark.parametrize("nu, f, inside", [
+    (0.1, 2.0, True), (0.1, 1.0, False), (0.1, 3.5, False),  # a tabulated nu: bounds 1 and 3, strict
+    (0.2, 1.4, False), (0.2, 1.6, True), (0.2, 3.9, True), (0.2, 4.1, False),  # interpolated: 1.5, 4
+    (0.0, 1.5, False), (0.4, 1.5, False),  # no wedge there
+    (0.35, 2.5, True),  # between a bound and nan: the nearer tabulated bounds (0.3's; 0.4's at w > 0.5)
+    (0.45, 1.5, None), (-0.1, 1.5, None),  # outside the table
+])
+def test_inside_flutter_wedge(nu, f, inside):
+    assert agg.inside_flutter_wedge(BOUNDARY, nu, f) is inside
+
+
+def test_derived_columns_are_the_formulas_of_their_docstring():
+    m = metrics(0.2, 1.5, 1.2, c_s=0.6, onset_time=700.0, first_drop_start_time=900.0,
+                first_drop_bottom_time=950.5)
+    assert agg.derived_columns(m, BOUNDARY) == {"celerity_over_cs": 2.0, "first_drop_start_after_onset": 200.0,
+                                                "first_drop_duration": 50.5, "inside_flutter_wedge": False}
+    empty = agg.derived_columns(metrics(0.2, 1.5, None, c_s=0.6, onset_time=None))
+    assert empty == dict.fromkeys(agg.DERIVED_COLUMNS)
+
+
+def test_all_metrics_csv_carries_the_derived_columns():
+    runs = [metrics(0.2, 1.6, 0.9, c_s=0.6)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+    header, row = files["all_metrics.csv"].splitlines()
+    values = dict(zip(header.split(","), row.split(",")))
+    assert values["celerity_over_cs"] == "1.5" and values["inside_flutter_wedge"] == "true"
+    assert values["first_drop_duration"] == ""
+
+
+def test_the_tables_read_back_as_written(tmp_path):
+    """analysis.table_csv (the reader of figures/ and paper/) on aggregate's own output."""
+    from analysis.errors import InputError
+    from analysis.table_csv import read_table
+
+    runs = [metrics(0.2, 1.5, 2.1, run_complete=False, end_reason="contact_not_converged", c_s=0.7)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+    (tmp_path / "table1.csv").write_text(files["table1.csv"])
+    rows = read_table(tmp_path / "table1.csv", ("nu", "celerity", "within_tol", "end_reason"))
+    assert rows[0]["celerity"] == 2.1 and rows[0]["within_tol"] is False
+    assert rows[0]["end_reason"] == "contact_not_converged" and math.isnan(rows[1]["celerity"])
+    with pytest.raises(InputError, match="missing required column.s. no_such_column"):
+        read_table(tmp_path / "table1.csv", ("no_such_column",))
