@@ -1,15 +1,23 @@
-// Per-step cost of slidewave runs: split into predictor, free solve, contact, correction and
-// diagnostics, steps/s, and the ratio of one step to one CHOLMOD solve on the same factor.
+// Per-step cost of slidewave runs: split into predictor, free solve, contact, correction,
+// diagnostics and output (with --stream), steps/s, and the ratio of one step to one CHOLMOD solve on
+// the same factor.
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2] [--t-end 1300]
 //                                      [--nu 0.2] [--f 1.5] [--solver circulant|cholmod]
+//                                      [--stream FOLDER [--checkpoint-interval S]]
+// --stream writes the run as `slidewave run` does (RUN.partial.h5 streamed, checkpoints every S s of
+// wall time, RUN.h5 put in place; io/run_session.hpp) into FOLDER/bench_H<n>.h5, so that ms/step
+// includes the output; without it nothing is written (the rows stay in memory).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "model/layer_model.hpp"
+#include "io/run_session.hpp"
 #include "model/simulation.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -35,12 +43,35 @@ double one_solve_seconds(const slidewave::LayerModel& model) {
   return seconds_since(start) / repeats;
 }
 
+/// Forwards to the run session and adds up the wall time spent in it: the cost of the output (rows
+/// drained to RUN.partial.h5, checkpoints, the final close and rename), measured apart from the step.
+class TimedObserver : public slidewave::RunObserver {
+ public:
+  explicit TimedObserver(slidewave::RunObserver& inner) : inner_(inner) {}
+  void after_step(slidewave::RunRecord& record, const Capture& capture) override {
+    const auto start = std::chrono::steady_clock::now();
+    inner_.after_step(record, capture);
+    seconds += seconds_since(start);
+  }
+  void at_end(slidewave::RunRecord& record, const Capture& capture) override {
+    const auto start = std::chrono::steady_clock::now();
+    inner_.at_end(record, capture);
+    seconds += seconds_since(start);
+  }
+  double seconds = 0;
+
+ private:
+  slidewave::RunObserver& inner_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<int> resolutions;
   double lambda_over_H = 2, t_end = 1300, nu = 0.2, f = 1.5;
   auto solver = slidewave::LinearSolverKind::circulant;
+  std::string stream_folder;
+  double checkpoint_interval = 300;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -53,20 +84,26 @@ int main(int argc, char** argv) {
       nu = std::atof(argv[++i]);
     } else if (a == "--f" && i + 1 < argc) {
       f = std::atof(argv[++i]);
+    } else if (a == "--stream" && i + 1 < argc) {
+      stream_folder = argv[++i];
+    } else if (a == "--checkpoint-interval" && i + 1 < argc) {
+      checkpoint_interval = std::atof(argv[++i]);
     } else if (a == "--solver" && i + 1 < argc) {
       const std::string kind = argv[++i];
       solver = kind == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::circulant;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F] [--solver circulant|cholmod]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F] [--solver circulant|cholmod] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
 
-  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), linear solver %s, one core\n", nu, f, lambda_over_H,
-              t_end, solver == slidewave::LinearSolverKind::cholmod ? "cholmod" : "circulant");
-  std::printf("%6s %8s %9s | %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s\n", "H/h", "n_dofs", "steps", "predict",
-              "free_slv", "contact", "correct", "diagnost", "ms/step", "steps/s", "1solve_ms", "step/slv",
+  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), linear solver %s, one core, output %s\n", nu, f,
+              lambda_over_H, t_end, solver == slidewave::LinearSolverKind::cholmod ? "cholmod" : "circulant",
+              stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
+                                                             std::to_string(checkpoint_interval) + " s").c_str());
+  std::printf("%6s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s\n", "H/h", "n_dofs", "steps", "predict",
+              "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s", "1solve_ms", "step/slv",
               "setup_s");
   for (int n : resolutions) {
     slidewave::RunConfig config;
@@ -77,17 +114,26 @@ int main(int argc, char** argv) {
     config.time.t_end = t_end;
     config.numerics.linear_solver = solver;
     const slidewave::LayerModel model(config);
+    config.output.checkpoint_interval = checkpoint_interval;
     slidewave::StepProfile profile;
     const auto start = std::chrono::steady_clock::now();
-    slidewave::simulate(model, {}, nullptr, &profile);
+    std::unique_ptr<slidewave::RunSession> session;
+    if (!stream_folder.empty())
+      session = std::make_unique<slidewave::RunSession>(stream_folder + "/bench_H" + std::to_string(n) + ".h5", config,
+                                                        slidewave::Provenance{"slidewave_bench_step", ""}, false,
+                                                        std::cerr);
+    std::unique_ptr<TimedObserver> timed;
+    if (session) timed = std::make_unique<TimedObserver>(*session);
+    slidewave::simulate(model, {}, nullptr, &profile, timed.get());
+    const double output_seconds = timed ? timed->seconds : 0;
     const double total = seconds_since(start);
     const double per_step = (total - profile.setup) / profile.steps;
     const double solve = one_solve_seconds(model);
     const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
-    std::printf("%6d %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f | %9.3f %9.0f %9.3f %8.2f %8.2f\n", n,
+    std::printf("%6d %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.2f %8.2f\n", n,
                 model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
-                ms(profile.correction), ms(profile.diagnostics), 1e3 * per_step, 1 / per_step, 1e3 * solve,
-                per_step / solve, profile.setup);
+                ms(profile.correction), ms(profile.diagnostics), ms(output_seconds), 1e3 * per_step, 1 / per_step,
+                1e3 * solve, per_step / solve, profile.setup);
     std::fflush(stdout);
   }
   return 0;

@@ -82,6 +82,18 @@ hid_t native_type() {
   if constexpr (std::is_same<T, std::int64_t>::value) return H5T_NATIVE_INT64;
 }
 
+/// A whole dataset in memory (any shape, row-major). Throws IoError naming `file`.
+template <typename T>
+std::vector<T> read_dataset(hid_t parent, const std::string& name, const std::string& file) {
+  const Handle set = dataset_open(parent, name, file);
+  Handle space(H5Dget_space(set), H5Sclose);
+  std::vector<T> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  if (!data.empty())
+    check(H5Dread(set, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), file,
+          "read dataset " + name + " from");
+  return data;
+}
+
 /// Flushes the file and asks the OS to put it on disk (fsync), so that what a checkpoint counts is there.
 void flush_to_disk(hid_t file, const std::string& path);
 

@@ -8,11 +8,13 @@
 #include <cstring>
 
 #include "io/hdf5_support.hpp"
+#include "io/run_layout.hpp"
 #include "io/xdmf.hpp"
 
 namespace slidewave {
 
 using h5::Handle;
+using namespace run_layout;
 
 namespace {
 
@@ -34,11 +36,6 @@ std::uint64_t digest_update(std::uint64_t h, const T* data, std::size_t n) {
 hsize_t chunk_rows(std::size_t element_size, int n_cols) {
   return std::max<hsize_t>(1, 32768 / (element_size * std::max(1, n_cols)));
 }
-
-struct DatasetText {
-  const char* unit;
-  const char* description;
-};
 
 void describe(hid_t set, const DatasetText& text, const std::string& file) {
   h5::write_string_attribute(set, "unit", text.unit, file);
@@ -68,23 +65,6 @@ void write_fixed(hid_t parent, const std::string& name, const std::vector<T>& da
     h5::check(H5Dwrite(set, h5::native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), file,
               "write dataset " + name + " to");
   describe(set, text, file);
-}
-
-template <typename T>
-std::vector<T> read_all(hid_t parent, const std::string& name, const std::string& file) {
-  const Handle set = h5::dataset_open(parent, name, file);
-  Handle space(H5Dget_space(set), H5Sclose);
-  std::vector<T> data(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-  if (!data.empty())
-    h5::check(H5Dread(set, h5::native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), file,
-              "read dataset " + name + " from");
-  return data;
-}
-
-std::string snapshot_id(std::size_t k) {
-  char id[32];
-  std::snprintf(id, sizeof id, "%04zu", k);
-  return id;
 }
 
 }  // namespace
@@ -151,47 +131,6 @@ struct RunWriter::Files {
   }
 };
 
-namespace {
-struct GlobalColumn {
-  const char* name;
-  std::vector<double> GlobalSeries::*values;
-  DatasetText text;
-};
-const GlobalColumn kGlobalColumns[] = {
-    {"t", &GlobalSeries::t, {"s", "time of every step, stage-3 clock"}},
-    {"T", &GlobalSeries::T, {"N/m", "tangential force on the interface, -sum R_t, per unit depth"}},
-    {"N", &GlobalSeries::N, {"N/m", "normal force on the interface, sum R_n, per unit depth"}},
-    {"T_over_N", &GlobalSeries::T_over_N, {"1", "apparent friction T/N"}},
-    {"energy_kinetic", &GlobalSeries::energy_kinetic, {"J/m", "kinetic energy 1/2 v.M v"}},
-    {"energy_elastic", &GlobalSeries::energy_elastic, {"J/m", "elastic energy 1/2 u.K u (includes the preload)"}},
-    {"work_external", &GlobalSeries::work_external, {"J/m", "work of the imposed top displacement since t = 0"}},
-    {"dissipation_friction", &GlobalSeries::dissipation_friction,
-     {"J/m", "frictional dissipation -sum 1/2 (R_t(n)+R_t(n+1)) du_x since t = 0"}},
-    {"work_contact_normal", &GlobalSeries::work_contact_normal,
-     {"J/m", "energy lost by the normal contact forces, -sum 1/2 (R_n(n)+R_n(n+1)) du_y"}},
-    {"energy_balance_residual", &GlobalSeries::energy_balance_residual,
-     {"J/m", "E_kin + E_el + D_fric + W_normal - E(0) - W_ext (HHT dissipation for alpha > 0)"}},
-    {"contact_residual", &GlobalSeries::contact_residual, {"1", "last sweep's max reaction change / (p0 h)"}},
-};
-const DatasetText kIterationsText{"1", "Gauss-Seidel sweeps of the step"};
-
-struct InterfaceColumn {
-  const char* name;
-  Series2D<double> InterfaceSeries::*values;
-  DatasetText text;
-};
-const InterfaceColumn kInterfaceColumns[] = {
-    {"slip_velocity", &InterfaceSeries::slip_velocity, {"m/s", "du_x/dt over the step ending at t (contact nodes)"}},
-    {"slip", &InterfaceSeries::slip, {"m", "u_x of the contact nodes relative to t = 0"}},
-    {"opening", &InterfaceSeries::opening, {"m", "u_y of the contact nodes (gap to the rigid flat)"}},
-    {"normal_traction", &InterfaceSeries::normal_traction, {"Pa", "contact pressure, compression positive (R_n/h)"}},
-    {"tangential_traction", &InterfaceSeries::tangential_traction,
-     {"Pa", "frictional traction, positive when resisting sliding in +x (-R_t/h)"}},
-};
-const DatasetText kInterfaceTimeText{"s", "output times, stage-3 clock"};
-const DatasetText kStateText{"1", "0 open, 1 stick, 2 slip"};
-const DatasetText kInterfaceXText{"m", "position of the contact nodes (x = lambda is x = 0)"};
-}  // namespace
 
 RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance)
     : path_(std::move(working_path)), files_(std::make_unique<Files>()) {
@@ -311,7 +250,7 @@ void RunWriter::flush_to_disk(RunRecord& record) {
 void RunWriter::finish(RunRecord& record) {
   drain(record);
   write_run_outcome(files_->file, path_, record);
-  if (files_->interface.valid()) outline_.interface.t = read_all<double>(files_->interface, "t", path_);
+  if (files_->interface.valid()) outline_.interface.t = h5::read_dataset<double>(files_->interface, "t", path_);
   series_.clear();
   // Closing flushes what HDF5 still holds: a full disk shows here at the latest.
   errno = 0;
@@ -364,83 +303,5 @@ void RunWriter::discard() noexcept {
   std::remove(path_.c_str());
 }
 
-void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPosition& position) {
-  Handle earlier(H5Fopen(earlier_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!earlier.valid()) throw StreamMismatch("cannot open " + earlier_path + ": " + h5::last_error_reason());
-  try {
-    RunRecord block;
-    block.interface.x = read_all<double>(earlier, "/interface/x", earlier_path);
-    const int n_c = static_cast<int>(block.interface.x.size());
-    for (auto* s : {&block.interface.slip_velocity, &block.interface.slip, &block.interface.opening,
-                    &block.interface.normal_traction, &block.interface.tangential_traction})
-      s->n_cols = n_c;
-    block.interface.state.n_cols = n_c;
-    ensure_layout(block);
-    // Rows in blocks (memory stays flat), appended through the same path as during the run.
-    const auto read_rows = [&](const std::string& name, auto* out, std::int64_t first, std::int64_t n, int cols) {
-      using T = std::remove_pointer_t<decltype(out)>;
-      const Handle set = h5::dataset_open(earlier, name, earlier_path);
-      Handle space(H5Dget_space(set), H5Sclose);
-      hsize_t dims[2] = {0, 0};
-      H5Sget_simple_extent_dims(space, dims, nullptr);
-      if (static_cast<std::int64_t>(dims[0]) < first + n)
-        throw StreamMismatch(earlier_path + ": " + name + " holds " + std::to_string(dims[0]) + " rows, the checkpoint counts " +
-                             std::to_string(first + n));
-      const hsize_t start[2] = {static_cast<hsize_t>(first), 0}, count[2] = {static_cast<hsize_t>(n), static_cast<hsize_t>(cols)};
-      h5::check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr), earlier_path, "select in");
-      Handle memory(H5Screate_simple(cols ? 2 : 1, count, nullptr), H5Sclose);
-      h5::check(H5Dread(set, h5::native_type<T>(), memory, space, H5P_DEFAULT, out), earlier_path, "read " + name + " from");
-    };
-    const std::int64_t block_rows = static_cast<std::int64_t>(kGlobalBlockRows);
-    for (std::int64_t first = 0; first < position.n_global_rows; first += block_rows) {
-      const std::int64_t n = std::min(block_rows, position.n_global_rows - first);
-      for (const auto& c : kGlobalColumns) {
-        auto& v = block.global.*c.values;
-        v.resize(n);
-        read_rows(std::string("/global/") + c.name, v.data(), first, n, 0);
-      }
-      block.global.contact_iterations.resize(n);
-      read_rows("/global/contact_iterations", block.global.contact_iterations.data(), first, n, 0);
-      drain(block);
-    }
-    const std::int64_t interface_rows = static_cast<std::int64_t>(interface_block_rows_);
-    for (std::int64_t first = 0; first < position.n_interface_rows; first += interface_rows) {
-      const std::int64_t n = std::min(interface_rows, position.n_interface_rows - first);
-      block.interface.t.resize(n);
-      read_rows("/interface/t", block.interface.t.data(), first, n, 0);
-      for (const auto& c : kInterfaceColumns) {
-        auto& v = (block.interface.*c.values).data;
-        v.resize(n * n_c);
-        read_rows(std::string("/interface/") + c.name, v.data(), first, n, n_c);
-      }
-      block.interface.state.data.resize(n * n_c);
-      read_rows("/interface/state", block.interface.state.data.data(), first, n, n_c);
-      drain(block);
-    }
-    if (position.n_snapshots > 0) {
-      block.snapshot_mesh.coordinates = read_all<double>(earlier, "/snapshots/coordinates", earlier_path);
-      block.snapshot_mesh.connectivity = read_all<std::int64_t>(earlier, "/snapshots/connectivity", earlier_path);
-    }
-    for (std::int64_t k = 0; k < position.n_snapshots; ++k) {
-      const std::string group = "/snapshots/" + snapshot_id(static_cast<std::size_t>(k));
-      const Handle one = h5::group_open(earlier, group, earlier_path);
-      Snapshot snapshot{h5::read_double_attribute(one, "t", earlier_path),
-                        read_all<double>(one, "displacement", earlier_path),
-                        read_all<double>(one, "velocity", earlier_path)};
-      block.snapshots.push_back(std::move(snapshot));
-      drain(block);
-    }
-  } catch (const IoError& e) {
-    throw StreamMismatch(e.what());
-  }
-  if (position_.n_global_rows != position.n_global_rows || position_.n_interface_rows != position.n_interface_rows ||
-      position_.n_snapshots != position.n_snapshots)
-    throw StreamMismatch(earlier_path + ": row counts differ from the checkpoint's");
-  for (const auto& [name, digest] : position.digests) {
-    const auto found = position_.digests.find(name);
-    if (found == position_.digests.end() || found->second != digest)
-      throw StreamMismatch(earlier_path + ": " + name + " does not hold the bytes the checkpoint counted");
-  }
-}
 
 }  // namespace slidewave
