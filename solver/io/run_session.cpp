@@ -79,6 +79,9 @@ RunSession::RunSession(std::string final_path, const RunConfig& config, const Pr
         writer_->discard();
         writer_.reset();
         notes << "slidewave: cannot resume: " << e.what() << "; starting over\n";
+      } catch (...) {
+        writer_->discard();  // the temporary copy; the partial file and the checkpoint stay as they were
+        throw;
       }
     }
   }
