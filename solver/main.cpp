@@ -1,18 +1,26 @@
 // slidewave: one run of the periodic elastic layer sliding on a rigid flat under Coulomb friction
-// (Yastrebov 2016). Sample runs (CI executes the first two):
-//   slidewave check study/examples/paper_nu0.2_f1.5.json
-//   slidewave run study/examples/paper_nu0.2_f1.5.json -o run.h5
+// (Yastrebov 2016). Sample runs:
+//   slidewave check study/examples/paper_nu0.2_f1.5_H32.json     (validate, print the resolved config)
+//   slidewave run study/examples/paper_nu0.2_f1.5_H32.json -o run.h5
+//   slidewave keys [--json]                                      (the key table, docs/contracts.md section 1)
 //   slidewave --version
-// Exit codes: 0 success, 1 run failed (output flushed and marked incomplete), 2 invalid input.
+// Exit codes of `run` (docs/contracts.md):
+//   0 complete (end_reason t_end or stop_after_opening): RUN.h5 written, complete = 1;
+//   1 contact failure (contact_not_converged): RUN.h5 written with complete = 0;
+//   2 bad input (config key or value, CLI usage, step count over time.max_steps, unusable output
+//     path): nothing written;
+//   3 interrupted (SIGINT/SIGTERM): RUN.h5 neither created nor touched, what was computed is in
+//     RUN.partial.h5 (complete = 0, end_reason interrupted);
+//   4 I/O or internal error (unwritable file, HDF5 failure, ...): the message names the cause.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
+#include "config/config_keys.hpp"
 #include "config/run_config.hpp"
 #include "git_version.hpp"
+#include "io/output_path.hpp"
 #include "io/progress.hpp"
 #include "io/run_file.hpp"
 #include "model/layer_model.hpp"
@@ -26,14 +34,25 @@ extern "C" void omp_set_num_threads(int) __attribute__((weak));
 
 namespace {
 
+enum ExitCode { kComplete = 0, kContactFailure = 1, kBadInput = 2, kInterrupted = 3, kInternalError = 4 };
+
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop = true; }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+/// Writes the run where its outcome belongs and returns the exit code: an interrupted run goes to
+/// RUN.partial.h5 so that it never replaces (or poses as) RUN.h5.
+int write_outcome(const std::string& output_path, const slidewave::RunConfig& config,
+                  const slidewave::RunRecord& record, const slidewave::Provenance& provenance, double dt) {
+  using namespace slidewave;
+  const bool interrupted = record.end_reason == "interrupted";
+  const std::string path = interrupted ? partial_path_for(output_path) : output_path;
+  write_run_file(path, config, record, provenance);
+  if (record.complete) return kComplete;
+  std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
+            << ", t = " << record.n_steps_done * dt << " s; " << path
+            << " holds what was computed and is marked complete = 0"
+            << (interrupted ? "; " + output_path + " was not touched" : std::string()) << "\n";
+  return interrupted ? kInterrupted : kContactFailure;
 }
 
 }  // namespace
@@ -41,7 +60,7 @@ std::string read_file(const std::string& path) {
 int main(int argc, char** argv) {
   using namespace slidewave;
 
-  // 1. Parse options.
+  // 1. Parse options (a usage error is bad input: exit 2; --help and --version exit 0).
   CLI::App app{"slidewave: elastodynamic sliding of a periodic layer on a rigid flat under Coulomb friction"};
   app.set_version_flag("--version", std::string("slidewave ") + kVersion + " (git " + kGitCommit + ")");
   app.require_subcommand(1);
@@ -49,30 +68,57 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "compute one run and write RUN.h5");
   run->add_option("config", config_path, "run configuration (JSON)")->required();
   run->add_option("-o,--output", output_path, "output HDF5 file")->required();
-  int threads = 1;
-  run->add_option("--threads", threads, "threads of the BLAS/OpenMP under CHOLMOD")->check(CLI::Range(1, 256));
+  int threads = 0;
+  run->add_option("--threads", threads, "overrides numerics.threads (BLAS/OpenMP threads under CHOLMOD)");
   auto* check = app.add_subcommand("check", "validate a configuration and print it resolved");
   check->add_option("config", config_path, "run configuration (JSON)")->required();
-  CLI11_PARSE(app, argc, argv);
-
-  // 2. Read and validate the configuration (every problem at once, exit 2, nothing written).
-  RunConfig config;
+  auto* keys = app.add_subcommand("keys", "print the configuration keys (default: Markdown, docs/contracts.md)");
+  bool keys_json = false, keys_markdown = false;
+  auto* json_flag = keys->add_flag("--json", keys_json, "as JSON, one object per key");
+  keys->add_flag("--markdown", keys_markdown, "as the Markdown section of docs/contracts.md")->excludes(json_flag);
   try {
-    config = load_run_config(config_path);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kComplete : kBadInput;
+  }
+  if (keys->parsed()) {
+    std::cout << (keys_json ? config_keys_json().dump(2) + "\n" : config_keys_markdown());
+    return kComplete;
+  }
+
+  // 2. Read the configuration bytes once and validate exactly those (every problem at once, exit 2,
+  //    nothing written); the same bytes are recorded as /setup/config_input.
+  RunConfig config;
+  std::string config_input;
+  try {
+    config_input = read_config_bytes(config_path);
+    nlohmann::json overrides = nlohmann::json::object();
+    if (run->count("--threads")) overrides["numerics"]["threads"] = threads;
+    config = parse_run_config_text(config_input, config_path, overrides);
   } catch (const ConfigError& e) {
     std::cerr << "slidewave: " << config_path << ": " << e.what();
-    return 2;
+    return kBadInput;
   }
   if (check->parsed()) {
     std::cout << config.to_json().dump(2) << "\n";
-    return 0;
+    return kComplete;
   }
 
-  // 3. Build the model and run the three stages.
-  if (openblas_set_num_threads) openblas_set_num_threads(threads);
-  if (omp_set_num_threads) omp_set_num_threads(threads);
+  // 3. Check the output before any work: a run must not end in "cannot write", nor overwrite its input.
+  try {
+    check_output_path(output_path, {config_path});
+  } catch (const OutputPathError& e) {
+    std::cerr << "slidewave: " << e.what() << "\n";
+    return kBadInput;
+  }
+
+  // 4. Build the model and run the three stages. Progress on a closed pipe must fail as EPIPE (and be
+  //    silenced), not kill the run with SIGPIPE.
+  if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
+  if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  std::signal(SIGPIPE, SIG_IGN);
   std::string call;
   for (int i = 0; i < argc; ++i) call += (i ? " " : "") + std::string(argv[i]);
   try {
@@ -84,17 +130,10 @@ int main(int argc, char** argv) {
     const RunRecord record = simulate(model, progress, &g_stop);
     printer.finish();
 
-    // 4. Write the output atomically, complete or not.
-    write_run_file(output_path, config, record, {call, read_file(config_path)});
-    if (!record.complete) {
-      std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done
-                << ", t = " << record.n_steps_done * model.d.dt << " s; " << output_path
-                << " holds what was computed and is marked complete = 0\n";
-      return 1;
-    }
+    // 5. Write the output atomically, where its outcome belongs.
+    return write_outcome(output_path, config, record, {call, config_input}, model.d.dt);
   } catch (const std::exception& e) {
     std::cerr << "slidewave: error: " << e.what() << "\n";
-    return 1;
+    return kInternalError;
   }
-  return 0;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Typed run configuration mirroring the JSON groups of docs/contracts.md (section 1).
-// Every key has the paper's default; validation reports every violation at once.
+// The member initializers are the keys' defaults (the paper's); bounds, units and descriptions of
+// every key are in the key table (config/config_keys.hpp). Validation reports every violation at once.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -37,12 +38,14 @@ struct TimeConfig {
   double hht_alpha = 0.1;    ///< the paper's alpha (classic HHT alpha_H = -hht_alpha)
   ContactWeighting contact_weighting = ContactWeighting::alpha;
   std::optional<double> stop_after_opening;
+  long long max_steps = 20000000;  ///< a longer run is rejected before it starts (exit 2)
 };
 struct ContactConfig { double tolerance = 1e-10; int max_iterations = 2000; };
 struct PerturbationConfig { double amplitude = 1e-5; long long seed = 1; };
 struct NumericsConfig {
   /// circulant: FFT in x (exact for the uniform periodic mesh, ~20x faster); cholmod: general sparse path
   LinearSolverKind linear_solver = LinearSolverKind::circulant;
+  int threads = 1;  ///< BLAS/OpenMP threads under CHOLMOD (`run --threads` overrides it)
 };
 struct OutputConfig {
   int interface_stride = 4;
@@ -58,6 +61,9 @@ struct DerivedConstants {
   double p0;            ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive)
   double V0, dt;
   double t_onset_estimate;  ///< quasi-static time for T/N to reach f from preshear_ratio*f (s)
+  /// Stage-3 steps the time loop runs at most, ceil(t_end / dt - 1e-9): a double, so that an absurd
+  /// count (t_end = 1e12, rho = 1e-300) is compared with time.max_steps before any integer cast.
+  double n_steps;
 };
 
 struct RunConfig {
@@ -83,8 +89,19 @@ class ConfigError : public std::runtime_error {
   const std::vector<std::string> problems;
 };
 
-/// Parses and validates; throws ConfigError listing every invalid or unknown key.
+/// Parses and validates; throws ConfigError listing every invalid or unknown key, and a step count
+/// ceil(t_end / dt) over time.max_steps.
 RunConfig parse_run_config(const nlohmann::json& input);
+
+/// The bytes of a configuration file, read once: a run parses exactly these and records them as
+/// /setup/config_input, so editing or deleting the file during the run changes nothing.
+/// Throws ConfigError naming the file and the operating system's reason when it cannot be read.
+std::string read_config_bytes(const std::string& path);
+/// Parses JSON text (`origin` names it in messages), merges `overrides` (JSON merge-patch: the CLI's
+/// --threads) and validates the result like parse_run_config.
+RunConfig parse_run_config_text(const std::string& text, const std::string& origin,
+                                const nlohmann::json& overrides = nlohmann::json::object());
+/// read_config_bytes + parse_run_config_text.
 RunConfig load_run_config(const std::string& path);
 
 }  // namespace slidewave

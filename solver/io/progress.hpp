@@ -1,7 +1,9 @@
 #pragma once
 // One-line progress report on stderr: simulated time, steps/s, ETA, T/N and slipping nodes.
 // On a terminal the line is rewritten in place; otherwise (when forced with progress = always) one
-// line per report, so logs stay readable.
+// line per report, so logs stay readable. Progress never stops a run: the first failed write (a
+// closed pipe, a full disk) silences the printer; main() ignores SIGPIPE so that such a write fails
+// with EPIPE instead of killing the process.
 #include "config/run_config.hpp"
 
 namespace slidewave {
@@ -14,7 +16,9 @@ class ProgressPrinter {
   void finish() const;
 
  private:
-  bool enabled_, terminal_;
+  void silence() const;
+  mutable bool enabled_;
+  bool terminal_;
   int n_contact_nodes_;
 };
 

@@ -5,11 +5,11 @@
 
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 #include <stdexcept>
 #include <vector>
 
 #include "git_version.hpp"
+#include "io/xdmf.hpp"
 
 namespace slidewave {
 namespace {
@@ -100,46 +100,7 @@ std::string utc_now() {
   return buffer;
 }
 
-std::string base_name(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-void write_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& rec) {
-  const size_t n_nodes = rec.snapshot_mesh.coordinates.size() / 2;
-  const size_t n_elements = rec.snapshot_mesh.connectivity.size() / 4;
-  std::ofstream out(path);
-  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"layer\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (size_t s = 0; s < rec.snapshots.size(); ++s) {
-    char id[32];
-    std::snprintf(id, sizeof id, "%04zu", s);
-    out << "   <Grid Name=\"snapshot_" << id << "\" GridType=\"Uniform\">\n"
-        << "    <Time Value=\"" << rec.snapshots[s].t << "\"/>\n"
-        << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n"
-        << "     <DataItem Dimensions=\"" << n_elements << " 4\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
-        << h5_name << ":/snapshots/connectivity</DataItem>\n    </Topology>\n"
-        << "    <Geometry GeometryType=\"XY\">\n     <DataItem Dimensions=\"" << n_nodes
-        << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name
-        << ":/snapshots/coordinates</DataItem>\n    </Geometry>\n";
-    for (const char* field : {"displacement", "velocity"})
-      out << "    <Attribute Name=\"" << field << "\" AttributeType=\"Vector\" Center=\"Node\">\n"
-          << "     <DataItem Dimensions=\"" << n_nodes << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-          << h5_name << ":/snapshots/" << id << "/" << field << "</DataItem>\n    </Attribute>\n";
-    out << "   </Grid>\n";
-  }
-  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  if (!out) throw std::runtime_error("cannot write " + path);
-}
-
 }  // namespace
-
-std::string xdmf_path_for(const std::string& h5_path) {
-  const auto dot = h5_path.find_last_of('.');
-  const auto slash = h5_path.find_last_of('/');
-  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  return (has_ext ? h5_path.substr(0, dot) : h5_path) + ".xdmf";
-}
 
 void write_run_file(const std::string& path, const RunConfig& config, const RunRecord& rec,
                     const Provenance& provenance) {
@@ -238,16 +199,19 @@ void write_run_file(const std::string& path, const RunConfig& config, const RunR
     std::remove(temporary.c_str());
     throw;
   }
-  // The sidecar goes into place only after run.h5 did, so it never points at a missing file.
-  const std::string xdmf = xdmf_path_for(path);
-  if (!rec.snapshots.empty()) write_xdmf(xdmf + ".tmp", base_name(path), rec);
+  // The sidecars go into place only after run.h5 did, so they never point at a missing file.
+  try {
+    stage_xdmf_sidecars(path, rec);
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     std::remove(temporary.c_str());
-    std::remove((xdmf + ".tmp").c_str());
+    discard_xdmf_sidecars(path);
     throw std::runtime_error("cannot rename " + temporary + " to " + path);
   }
-  if (!rec.snapshots.empty() && std::rename((xdmf + ".tmp").c_str(), xdmf.c_str()) != 0)
-    throw std::runtime_error("cannot rename " + xdmf + ".tmp to " + xdmf);
+  publish_xdmf_sidecars(path, rec);
 }
 
 }  // namespace slidewave

@@ -1,6 +1,6 @@
 #pragma once
-// Writes run.h5 (format_version 1, docs/contracts.md section 2) and, when the run has bulk snapshots,
-// the XDMF sidecar that ParaView opens. Both are written to a temporary name and renamed, so a failed
+// Writes run.h5 (format_version 1, docs/contracts.md section 2) and its XDMF sidecars (io/xdmf.hpp)
+// that ParaView opens. Both are written to a temporary name and renamed, so a failed
 // or killed run never leaves a file that looks complete (an incomplete run is written with
 // complete = 0 and its end_reason).
 #include <string>
@@ -20,8 +20,5 @@ struct Provenance {
 /// Throws std::runtime_error on any HDF5 failure (and removes the temporary file).
 void write_run_file(const std::string& path, const RunConfig& config, const RunRecord& record,
                     const Provenance& provenance);
-
-/// Path of the XDMF sidecar of an HDF5 path (RUN.h5 -> RUN.xdmf).
-std::string xdmf_path_for(const std::string& h5_path);
 
 }  // namespace slidewave

@@ -13,6 +13,7 @@
 
 #include "git_version.hpp"
 #include "io/run_file.hpp"
+#include "io/xdmf.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "test_support.hpp"
@@ -123,7 +124,7 @@ TEST(RunFile, RoundTripWithProvenance) {
   const std::string path = (dir.path / "run.h5").string();
   const Provenance provenance{"slidewave run config.json -o run.h5", kInput};
   ASSERT_NO_THROW(write_run_file(path, config, rec, provenance));
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.h5", "run.xdmf"})) << "no temporary left";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.h5", "run.interface.xdmf", "run.xdmf"})) << "no temporary left";
 
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -237,6 +238,10 @@ TEST(RunFile, RoundTripWithProvenance) {
   std::stringstream text;
   text << xdmf.rdbuf();
   EXPECT_NE(text.str().find("run.h5:/snapshots/0001/displacement"), std::string::npos);
+  std::ifstream interface_xdmf(dir.path / "run.interface.xdmf");
+  std::stringstream interface_text;
+  interface_text << interface_xdmf.rdbuf();
+  EXPECT_NE(interface_text.str().find("run.h5:/interface/slip_velocity"), std::string::npos);
 }
 
 TEST(RunFile, IncompleteRunIsMarked) {
@@ -280,6 +285,8 @@ TEST(RunFile, XdmfPath) {
   EXPECT_EQ(xdmf_path_for("out/run.h5"), "out/run.xdmf");
   EXPECT_EQ(xdmf_path_for("run"), "run.xdmf");
   EXPECT_EQ(xdmf_path_for("a.b/run"), "a.b/run.xdmf");
+  EXPECT_EQ(interface_xdmf_path_for("out/run.h5"), "out/run.interface.xdmf");
+  EXPECT_EQ(interface_xdmf_path_for("a.b/run"), "a.b/run.interface.xdmf");
 }
 
 }  // namespace

@@ -1,0 +1,145 @@
+#include "io/xdmf.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+namespace slidewave {
+namespace {
+
+std::string base_name(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string without_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return has_ext ? path.substr(0, dot) : path;
+}
+
+/// A stream that prints doubles with all their digits: a reader's time must equal the HDF5 one.
+std::ofstream open_exact(const std::string& path) {
+  std::ofstream out(path);
+  out.precision(std::numeric_limits<double>::max_digits10);
+  return out;
+}
+
+void finish(std::ofstream& out, const std::string& path) {
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::string hdf_item(const std::string& dimensions, const char* number_type, int precision,
+                     const std::string& target) {
+  return "<DataItem Dimensions=\"" + dimensions + "\" NumberType=\"" + number_type + "\" Precision=\"" +
+         std::to_string(precision) + "\" Format=\"HDF\">" + target + "</DataItem>";
+}
+
+struct InterfaceField {
+  const char* name;
+  const char* number_type;
+  int precision;
+};
+// The /interface series of docs/contracts.md section 2, (n_out x n_c) each.
+constexpr InterfaceField kInterfaceFields[] = {
+    {"slip_velocity", "Float", 8},       {"slip", "Float", 8},  {"opening", "Float", 8},
+    {"normal_traction", "Float", 8},     {"tangential_traction", "Float", 8},
+    {"state", "Char", 1},
+};
+
+bool has_interface(const RunRecord& record) { return !record.interface.t.empty(); }
+bool has_bulk(const RunRecord& record) { return !record.snapshots.empty(); }
+
+}  // namespace
+
+std::string xdmf_path_for(const std::string& h5_path) { return without_extension(h5_path) + ".xdmf"; }
+
+std::string interface_xdmf_path_for(const std::string& h5_path) {
+  return without_extension(h5_path) + ".interface.xdmf";
+}
+
+void write_bulk_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& rec) {
+  const std::string n_nodes = std::to_string(rec.snapshot_mesh.coordinates.size() / 2);
+  const std::string n_elements = std::to_string(rec.snapshot_mesh.connectivity.size() / 4);
+  std::ofstream out = open_exact(path);
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"layer\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (size_t s = 0; s < rec.snapshots.size(); ++s) {
+    char id[32];
+    std::snprintf(id, sizeof id, "%04zu", s);
+    out << "   <Grid Name=\"snapshot_" << id << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << rec.snapshots[s].t << "\"/>\n"
+        << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n     "
+        << hdf_item(n_elements + " 4", "Int", 8, h5_name + ":/snapshots/connectivity") << "\n    </Topology>\n"
+        << "    <Geometry GeometryType=\"XY\">\n     "
+        << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":/snapshots/coordinates") << "\n    </Geometry>\n";
+    for (const char* field : {"displacement", "velocity"})
+      out << "    <Attribute Name=\"" << field << "\" AttributeType=\"Vector\" Center=\"Node\">\n     "
+          << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":/snapshots/" + id + "/" + field)
+          << "\n    </Attribute>\n";
+    out << "   </Grid>\n";
+  }
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  finish(out, path);
+}
+
+// The line is a 2-D rectilinear mesh of 1 x n_c nodes (VX = /interface/x, VY = 0): no connectivity
+// to store, and readers treat it as a line that ParaView's "Plot Data" draws against x. Row k of
+// each (n_out x n_c) dataset is selected with a hyperslab (start k 0, stride 1 1, count 1 n_c).
+void write_interface_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& rec) {
+  const auto& s = rec.interface;
+  const std::string n_c = std::to_string(s.x.size());
+  const std::string n_out = std::to_string(s.t.size());
+  std::ofstream out = open_exact(path);
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"interface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (size_t k = 0; k < s.t.size(); ++k) {
+    char id[32];
+    std::snprintf(id, sizeof id, "%05zu", k);
+    out << "   <Grid Name=\"interface_" << id << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << s.t[k] << "\"/>\n"
+        << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"1 " << n_c << "\"/>\n"
+        << "    <Geometry GeometryType=\"VXVY\">\n     "
+        << hdf_item(n_c, "Float", 8, h5_name + ":/interface/x") << "\n"
+        << "     <DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0</DataItem>\n"
+        << "    </Geometry>\n";
+    for (const auto& field : kInterfaceFields)
+      out << "    <Attribute Name=\"" << field.name << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+          << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 " << n_c << "\" Type=\"HyperSlab\">\n"
+          << "      <DataItem Dimensions=\"3 2\" Format=\"XML\">" << k << " 0 1 1 1 " << n_c << "</DataItem>\n      "
+          << hdf_item(n_out + " " + n_c, field.number_type, field.precision,
+                      h5_name + ":/interface/" + field.name)
+          << "\n     </DataItem>\n    </Attribute>\n";
+    out << "   </Grid>\n";
+  }
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  finish(out, path);
+}
+
+void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record) {
+  const std::string h5_name = base_name(h5_path);
+  try {
+    if (has_bulk(record)) write_bulk_xdmf(xdmf_path_for(h5_path) + ".tmp", h5_name, record);
+    if (has_interface(record)) write_interface_xdmf(interface_xdmf_path_for(h5_path) + ".tmp", h5_name, record);
+  } catch (...) {
+    discard_xdmf_sidecars(h5_path);
+    throw;
+  }
+}
+
+void publish_xdmf_sidecars(const std::string& h5_path, const RunRecord& record) {
+  for (const auto& [present, sidecar] : {std::pair{has_bulk(record), xdmf_path_for(h5_path)},
+                                         std::pair{has_interface(record), interface_xdmf_path_for(h5_path)}})
+    if (present && std::rename((sidecar + ".tmp").c_str(), sidecar.c_str()) != 0)
+      throw std::runtime_error("cannot rename " + sidecar + ".tmp to " + sidecar);
+}
+
+void discard_xdmf_sidecars(const std::string& h5_path) {
+  std::remove((xdmf_path_for(h5_path) + ".tmp").c_str());
+  std::remove((interface_xdmf_path_for(h5_path) + ".tmp").c_str());
+}
+
+}  // namespace slidewave
