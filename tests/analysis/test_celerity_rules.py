@@ -144,3 +144,101 @@ def test_every_metrics_file_carries_every_rule(run_file):
     assert metrics["celerity_rule_opening_pulse"] == metrics["celerity"]
     assert metrics["celerity_rule_opening_pulse_from_opening"] == pytest.approx(0.882, rel=5e-3)
     json.dumps(metrics, allow_nan=False)
+
+
+# ---------------------------------------------------------------------------------------------
+# analysis score-rules
+
+
+def rule_metrics_file(tmp_path, name, nu, f, by_rule, **changes):
+    """A metrics file of a (nu, f) cell with the given rule celerities (others undefined)."""
+    c_s, c_l = wave_speeds(nu)
+    metrics = {"nu": nu, "f": f, "celerity": by_rule.get("localization"), "c_s": c_s, "c_l": c_l,
+               "opening": True, "complete": True, "non_physical": False,
+               "sampling_too_coarse": False, "celerity_rule_default": "localization"}
+    for rule in rules.RULES:
+        metrics[f"celerity_rule_{rule}"] = by_rule.get(rule)
+        metrics[f"celerity_rule_{rule}_reason"] = "ok" if rule in by_rule else "empty_window"
+    metrics.update(changes)
+    path = tmp_path / f"{name}.json"
+    path.write_text(json.dumps(metrics))
+    return path
+
+
+def run_cli(*args):
+    import subprocess
+    import sys
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[2]
+    return subprocess.run([sys.executable, "-m", "analysis", *map(str, args)], cwd=root,
+                          capture_output=True, text=True, timeout=120)
+
+
+def scored(tmp_path, files, tolerance=0.05):
+    from analysis.aggregate import load_metrics
+    from analysis.reference import read_reference
+    from analysis.rule_scores import rule_scores
+    scores = rule_scores([load_metrics(p) for p in files], read_reference(), tolerance)
+    return {s["rule"]: s for s in scores}
+
+
+def test_score_rules_counts_sign_regime_tolerance_per_rule(tmp_path):
+    files = [
+        # nu = 0.2, f = 1.5 (published 0.882): within 5 % under localization, 10 % low under late.
+        rule_metrics_file(tmp_path, "a", 0.2, 1.5, {"localization": 0.90, "late": 0.79,
+                                                     "opening_pulse": 0.88}),
+        # nu = 0.45, f = 1 (published -2.523, supersonic): wrong sign (regime from |c|: supersonic)
+        # under localization; right sign but intersonic (|c| < c_l = 1.95) under opening_pulse.
+        rule_metrics_file(tmp_path, "b", 0.45, 1.0, {"localization": 2.5, "opening_pulse": -1.5}),
+        # nu = 0, f = 1.5 (published 0.982): within under both, but the run never opens.
+        rule_metrics_file(tmp_path, "c", 0.0, 1.5, {"localization": 0.98, "opening_pulse": 0.98},
+                          opening=False),
+    ]
+    s = scored(tmp_path, files)
+    assert s["localization"]["default"] and not s["opening_pulse"]["default"]
+    loc, pulse, late = s["localization"], s["opening_pulse"], s["late"]
+    assert (loc["cells_published"], loc["cells_measured"], loc["cells_excluded"]) == (38, 2, 36)
+    assert (loc["sign_matches"], loc["regime_matches"], loc["within_tolerance"], loc["reproduced"]) == (1, 2, 1, 1)
+    assert (pulse["sign_matches"], pulse["regime_matches"], pulse["within_tolerance"], pulse["reproduced"]) == (2, 1, 1, 1)
+    assert (late["cells_measured"], late["within_tolerance"], late["reproduced"]) == (1, 0, 0)
+    assert late["median_abs_deviation"] == pytest.approx(abs(0.79 - 0.882) / 0.882)
+    assert s["first_100s"]["cells_measured"] == 0 and s["first_100s"]["median_abs_deviation"] is None
+
+
+@pytest.mark.parametrize("flag", [dict(non_physical=True), dict(sampling_too_coarse=True),
+                                  dict(complete=False), dict(opening=False)])
+def test_score_rules_flagged_runs_are_not_reproduced_under_any_rule(tmp_path, flag):
+    good = {rule: 0.882 for rule in rules.RULES}
+    s = scored(tmp_path, [rule_metrics_file(tmp_path, "a", 0.2, 1.5, good, **flag)])
+    assert all(score["reproduced"] == 0 and score["cells_measured"] == 0 for score in s.values())
+    s = scored(tmp_path, [rule_metrics_file(tmp_path, "a", 0.2, 1.5, good)])
+    assert all(score["reproduced"] == 1 for score in s.values())
+
+
+def test_score_rules_command_prints_and_writes_csv(tmp_path):
+    files = [rule_metrics_file(tmp_path, "a", 0.2, 1.5, {"localization": 0.90, "late": 0.79})]
+    out = tmp_path / "out" / "scores.csv"
+    result = run_cli("score-rules", *files, "--tolerance", "0.05", "--out", out)
+    assert result.returncode == 0, result.stderr
+    assert "localization *" in result.stdout
+    lines = out.read_text().splitlines()
+    assert lines[0].startswith("rule,default,cells_published,cells_measured")
+    assert [line.split(",")[0] for line in lines[1:]] == list(rules.RULES)
+    assert lines[1].split(",")[1:9] == ["true", "38", "1", "37", "1", "1", "1", "1"]
+    assert [p.name for p in out.parent.iterdir()] == ["scores.csv"]  # no temporary left
+
+
+def test_score_rules_refuses_metrics_without_rules_and_writes_nothing(tmp_path):
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps({"nu": 0.2, "f": 1.5, "celerity": 0.88}))
+    out = tmp_path / "scores.csv"
+    result = run_cli("score-rules", old, "--out", out)
+    assert result.returncode == 2
+    assert "old.json" in result.stderr and "celerity_rule_localization" in result.stderr
+    assert "Traceback" not in result.stderr and not out.exists()
+    files = [rule_metrics_file(tmp_path, n, 0.2, 1.5, {"localization": 0.9}) for n in "ab"]
+    result = run_cli("score-rules", *files, "--out", out)
+    assert result.returncode == 2 and "two metrics for the cell" in result.stderr
+    assert not out.exists()
+    result = run_cli("score-rules", files[0], "--tolerance", "-1")
+    assert result.returncode == 2 and "--tolerance" in result.stderr
