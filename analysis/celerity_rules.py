@@ -10,9 +10,14 @@ and 100 s, `analysis.measure.time_unit_ratio`).
   start), a node of the slipping run bounded by that front has u_y above the run's opening
   threshold. The life is not cut at `window_length`: the paper's pulses open "after a certain
   propagation distance", and at H/32 they open 100-330 s after their localization (nu = 0.2,
-  f = 1.5: 102 s; nu = 0, f = 1.5: 328 s; nu = 0.45, f = 1: 249 s). Of the major fronts whose pulse opens, the one whose pulse opens first is taken (ties:
-  the earlier start). Window: `window_length` from that front's start; fitted: that front plus
-  the major fronts of its direction at least `min_relative_strength` as strong as it in the window.
+  f = 1.5: 102 s; nu = 0, f = 1.5: 328 s; nu = 0.45, f = 1: 249 s). Of the major fronts whose
+  pulse opens, the strongest (`EdgeTrack.strength`, median peak slip velocity over its life) is
+  the major pulse (ties: the one that opens first). Not the first to open: at nu = 0, f = 1.1
+  (H/32) a precursor front near c_l bounds a slipping run that reaches back over the growing
+  pulse, so its run opens first (1465 s), though its strength is a fifth of that of the pulse
+  that localizes behind it at 1578 s. Window: `window_length` from that front's start; fitted:
+  that front plus the major fronts of its direction at least `min_relative_strength` as strong as
+  it in the window (a train of pulses).
 - `opening_pulse_from_opening`: the same front and fit, the window starting at the first frame in
   which its pulse opens.
 - `opening_front`: front tracking (`analysis.tracking`) on the opening map, u_y above the opening
@@ -182,7 +187,7 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
     major = localization.major
     opened = math.isfinite(first_opening_time)
 
-    # The major pulse that opens, and when.
+    # The major pulse that opens (the strongest front whose run opens), and when.
     if localization.reason in ("no_slip", "uniform_slip", "no_major_front"):
         pulse_reason = localization.reason
     elif not opened:
@@ -195,9 +200,9 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
             t_open = pulse_opening_time(track, t, v, u_y, slip_threshold, opening_threshold,
                                         front_map.grid)
             if math.isfinite(t_open):
-                opening_pulses.append((t_open, track.start, id(track), track, direction))
+                opening_pulses.append((-track.strength, t_open, id(track), t_open, track, direction))
     if opening_pulses:
-        t_open, _, _, anchor, direction = min(opening_pulses, key=lambda item: item[:3])
+        *_, t_open, anchor, direction = min(opening_pulses, key=lambda item: item[:3])
         out["opening_pulse"] = anchored_fit(anchor, direction, major, anchor.start, window_length)
         out["opening_pulse_from_opening"] = anchored_fit(anchor, direction, major, t_open, window_length)
     else:

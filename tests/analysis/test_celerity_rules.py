@@ -242,3 +242,19 @@ def test_score_rules_refuses_metrics_without_rules_and_writes_nothing(tmp_path):
     assert not out.exists()
     result = run_cli("score-rules", files[0], "--tolerance", "-1")
     assert result.returncode == 2 and "--tolerance" in result.stderr
+
+
+def test_opening_pulse_is_the_strongest_front_whose_pulse_opens_not_the_first():
+    # A weak pulse near c_l opens first (900 s); the strong, slower pulse behind it opens later.
+    # lambda = 4 H: the faster pulse laps the slower one only after t_stop.
+    scenario = Scenario(nu=0.0, f=1.1, lambda_over_H=4.0, t_stop=1300.0, pulses=[
+        Pulse(celerity=0.98, x_front=10.0, t_start=800.0, amplitude=0.6e-3, opening=0.01,
+              opening_start=900.0),
+        Pulse(celerity=0.80, x_front=35.0, t_start=950.0, amplitude=3e-3, opening=0.01,
+              opening_start=1000.0)])
+    results, _, opened, d = measure_all(scenario)
+    assert opened.t_first == pytest.approx(d["t"][d["t"] >= 900.0][0])
+    pulse = results["opening_pulse"]
+    assert pulse.celerity == pytest.approx(0.80, rel=5e-3)
+    assert pulse.window[0] == pytest.approx(d["t"][d["t"] >= 950.0][0])
+    assert results["opening_pulse_from_opening"].window[0] == pytest.approx(d["t"][d["t"] >= 1000.0][0])
