@@ -9,7 +9,8 @@ of the interface at the output time nearest to the frame. Middle: the deformed l
 the material speed |v| (log scale, fixed over the movie); the displacement since the first frame
 is magnified by --scale (default: so that the largest magnified displacement is 0.15 H; the factor
 is printed on the frame and on stderr). Bottom: T/N against time with a marker at the frame time.
-The time stamp gives t in s and in shear transit times t_s = H/c_s.
+The time stamp gives t in s, in shear transit times t_s = H/c_s, and in t_s after the
+quasi-static onset estimate (t_onset_estimate).
 
 MP4 (H.264) through matplotlib's FFMpegWriter; when ffmpeg is missing a GIF is written instead,
 next to the requested path with the suffix .gif, and stderr says so. A progress bar on stderr.
@@ -68,7 +69,7 @@ def main(argv=None):
     args = parse_args(argv)
     run = open_run(args.run)
     H, lam, c_s = run.attr("H"), run.attr("lambda"), run.attr("c_s")
-    t_s = H / c_s
+    t_s, t_onset = H / c_s, run.attr("t_onset_estimate")
     snapshots, coordinates, connectivity = run.snapshots()
     frames = [s for s in snapshots if (args.tmin is None or s[1] >= args.tmin)
               and (args.tmax is None or s[1] <= args.tmax)]
@@ -131,8 +132,8 @@ def main(argv=None):
     ax_tn.set_xlabel("time $t$ (s)")
     ax_tn.set_ylabel("$T/N$")
     ax_tn.grid(alpha=0.3)
-    stamp = fig.text(0.1, 0.96, "", fontsize=11, family="monospace")
-    fig.text(0.9, 0.96, _style.run_label(run), fontsize=8, ha="right")
+    stamp = fig.text(0.03, 0.945, "", fontsize=10, family="monospace")
+    fig.text(0.97, 0.975, _style.run_label(run), fontsize=8, ha="right")
     mesh = None
 
     # 4. Frames.
@@ -152,7 +153,7 @@ def main(argv=None):
             line_o.set_ydata(op[k])
             ax_v.set_title(f"interface at $t$ = {t_if[rows[k]]:.1f} s", fontsize=8, loc="right", color="0.3")
             marker.set_data([t], [np.interp(t, t_global, tn)])
-            stamp.set_text(f"t = {t:8.1f} s = {t / t_s:6.2f} t_s")
+            stamp.set_text(f"t = {t:7.1f} s = {t / t_s:5.2f} t_s   (onset est. + {(t - t_onset) / t_s:5.2f} t_s)")
             writer.grab_frame()
             progress(k + 1, len(frames), started)
     _style.plt.close(fig)

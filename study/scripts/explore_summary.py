@@ -5,7 +5,8 @@
 
 The point's parameters and outcome from its metrics.json (the measurements the analysis made; an
 incomplete run or a missing measurement says so), then the figures, embedded as PNG so that the
-page travels alone. Sized to print on one page (A4 landscape).
+page travels alone. On screen the maps take half the width each; printed, the page fits one A4
+landscape sheet.
 """
 
 from __future__ import annotations
@@ -42,7 +43,8 @@ h1 { font-size: 16px; margin: 0.2em 0; } p { margin: 0.2em 0; }
 table { border-collapse: collapse; } td, th { border: 1px solid #ccc; padding: 0.1em 0.4em; }
 th { text-align: left; background: #f0f0f0; font-weight: normal; }
 .figures { display: flex; flex-wrap: wrap; gap: 0.4em; }
-.figures img { height: 230px; } .top img { height: 300px; }
+.figures img { width: 49%; } .top img { height: 330px; }
+@media print { .figures img { width: 24%; } .top img { height: 250px; } }
 .warn { background: #fde0dc; padding: 0.2em 0.4em; }
 """
 

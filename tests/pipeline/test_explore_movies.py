@@ -50,6 +50,6 @@ def test_movie_run_requests_one_snapshot_per_frame(tmp_path):
     snakemake(tmp_path, "-c1", "results/movies/paper/config.json")
     config = json.loads((tmp_path / "results/movies/paper/config.json").read_text())
     times = config["output"]["snapshot_times"]
-    assert len(times) == 121  # 0 ... 12 t_s every 0.1 t_s (study/config.yaml movies.runs.paper)
+    assert len(times) == 141  # 0 ... 14 t_s every 0.1 t_s (study/config.yaml movies.runs.paper)
     assert config["output"]["interface_stride"] == 1
     assert config["mesh"]["elements_per_H"] == 64 and config["material"]["nu"] == 0.2
