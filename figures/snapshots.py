@@ -9,12 +9,15 @@ the deformed layer, the displacement since the first snapshot magnified by --sca
 outline is the layer at the first snapshot, i.e. before the slip if the first snapshot is taken
 then); beneath it the slip velocity and the opening against the reference position x, at the
 interface output time nearest to the snapshot. All blocks share their colour scale and axes; the
-x-range covers the whole magnified layer.
+colour scale is logarithmic (from V0, or 1e-4 of the largest speed, up to the largest speed) so that
+the slow early snapshots are not black beside the fast pulses of the later ones; the x-range covers
+the whole magnified layer.
 """
 import argparse
 import string
 
 import numpy as np
+from matplotlib.colors import LogNorm
 from matplotlib.gridspec import GridSpec
 from matplotlib.patches import Rectangle
 
@@ -76,7 +79,10 @@ def main(argv=None):
 
     # 2. Shared scales: one colour scale for |v|, one y-range per profile kind.
     speeds = [np.hypot(v[:, 0], v[:, 1]) for _, _, _, v in snapshots]
-    norm = _style.plt.Normalize(0.0, max(float(s.max()) for s in speeds) or 1.0)
+    v_max = max(float(s.max()) for s in speeds) or 1.0
+    v_floor = min(max(run.attr("V0"), 1e-4 * v_max), 0.1 * v_max)
+    norm = LogNorm(v_floor, v_max)
+    speeds = [np.maximum(s, v_floor) for s in speeds]  # below the floor: the floor's colour
     xs = np.append(x, lam)  # periodic: close the profiles at x = lambda
     close = lambda a: np.concatenate([a, a[:, :1]], axis=1)  # noqa: E731
     slip_velocity, opening = close(slip_velocity), close(opening)
@@ -129,7 +135,7 @@ def main(argv=None):
 
     # 4. Colour bar and title.
     cax = fig.add_axes([0.92, 0.3, 0.013, 0.4])
-    fig.colorbar(image, cax=cax).set_label("material velocity $|\\mathbf{v}|$ (m/s)")
+    fig.colorbar(image, cax=cax, extend="min").set_label("material velocity $|\\mathbf{v}|$ (m/s)")
     fig.suptitle(f"Material velocity in the layer (displacement since $t$ = {snapshots[0][1]:.1f} s "
                  f"magnified $\\times${args.scale:g}; dashed: layer at that time), interface slip "
                  f"velocity and opening\n{label}", fontsize=9)
