@@ -81,7 +81,8 @@ def main(argv=None):
     varying = [i for i in range(len(fixed)) if i not in shared]
 
     # 2. Three panels.
-    fig, axes = _style.plt.subplots(1, 3, figsize=(11.0, 3.8))
+    # Printed at the text width (6.5 in): 9 pt text prints at ~7 pt.
+    fig, axes = _style.plt.subplots(1, 3, figsize=(8.4, 3.3))
     panels = [("celerity", "front celerity $c_p/c_s$ (-)"),
               ("min_T_over_N", "minimum $T/N$ (-)"),
               ("max_opening", "maximum opening $u_y$ (mm)")]

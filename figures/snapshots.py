@@ -94,9 +94,9 @@ def main(argv=None):
     n = len(snapshots)
     columns = max(1, min(args.columns, n))
     block_rows = -(-n // columns)
-    width = 4.0
+    width = 2.9  # per block: printed at the text width (6.5 in), 3 blocks keep 9 pt text at ~6 pt
     map_height = max(0.8, width * 0.8 * (1.35 * H) / lam)
-    heights = [map_height, 0.75, 0.75, 0.45]
+    heights = [map_height, 0.75, 0.75, 0.7]
     fig = _style.plt.figure(figsize=(width * columns + 0.9, sum(heights) * block_rows + 1.0))
     grid = GridSpec(4 * block_rows, columns, figure=fig, height_ratios=heights * block_rows,
                     hspace=0.12, wspace=0.28, left=0.06, right=0.9, top=1 - 0.9 / fig.get_figheight(),
@@ -122,7 +122,7 @@ def main(argv=None):
         ax_v.plot(xs, slip_velocity[k], color="tab:orange", lw=1.0)
         ax_v.set_ylim(v_lim)
         ax_v.set_ylabel("$\\dot u_x$ (m/s)")
-        ax_map.set_title(f"profiles below at $t$ = {t_if:.1f} s", loc="right",
+        ax_map.set_title(f"profiles at {t_if:.1f} s", loc="right",
                          fontsize=7, color="0.3")
         ax_o.fill_between(xs, 0.0, opening[k], color="tab:cyan", lw=0.8, ec="tab:blue")
         ax_o.set_ylim(o_lim)

@@ -41,6 +41,12 @@ def pretty(label):
     return ", ".join(parts)
 
 
+def _legend_bottom(fig, ax, legend):
+    """The lower edge of a legend in data units of the y-axis."""
+    fig.canvas.draw()
+    return ax.transData.inverted().transform(legend.get_window_extent())[0][1]
+
+
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="+", help="run.h5 files (format_version 1)")
@@ -80,7 +86,8 @@ def main(argv=None):
     shared = ", ".join(curves[0]["parts"][k] for k in shared)
 
     # 3. Draw: gray first, the highlighted run on top in red.
-    fig, ax = _style.plt.subplots(figsize=(6.4, 3.6))
+    # Printed at half the text width (3.2 in): at this size its 9 pt text prints at ~6 pt.
+    fig, ax = _style.plt.subplots(figsize=(4.6, 3.4))
     grays = np.linspace(0.25, 0.7, max(1, len(curves) - 1))
     others = [i for i in range(len(curves)) if i != args.highlight]
     for shade, i in zip(grays, others):
@@ -99,8 +106,12 @@ def main(argv=None):
     ax.set_xlabel("time $t$ (s)  [$t$ = 0: start of the dynamic stage]")
     ax.set_ylabel("frictional force ratio $T/N$ (-)")
     ax.set_title(f"Global frictional force ratio $T/N$\n{shared}")
-    if len(curves) > 1:  # beside the axes: inside, it would hide the inversion T/N < 0
-        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+    if len(curves) > 1:  # top right, above T/N = 0: the runs are at their lowest T/N there
+        legend = ax.legend(loc="upper right", framealpha=0.9, fontsize=7)
+        bottom = _legend_bottom(fig, ax, legend)
+        if bottom < 0.0:  # it would hide the inversion T/N < 0: beside the axes instead
+            legend.remove()
+            ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=7)
     _style.save(fig, args.out)
     return 0
 
