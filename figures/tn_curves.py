@@ -106,8 +106,8 @@ def main(argv=None):
     ax.set_xlabel("time $t$ (s)  [$t$ = 0: start of the dynamic stage]")
     ax.set_ylabel("frictional force ratio $T/N$ (-)")
     ax.set_title(f"Global frictional force ratio $T/N$\n{shared}")
-    if len(curves) > 1:  # top right, above T/N = 0: the runs are at their lowest T/N there
-        legend = ax.legend(loc="upper right", framealpha=0.9, fontsize=7)
+    if len(curves) > 1:  # where it covers the fewest curve points, if that is above T/N = 0
+        legend = ax.legend(loc="best", framealpha=0.9, fontsize=7)
         bottom = _legend_bottom(fig, ax, legend)
         if bottom < 0.0:  # it would hide the inversion T/N < 0: beside the axes instead
             legend.remove()
