@@ -82,3 +82,10 @@ def test_snapshot_colours_are_logarithmic_from_v0(data, tmp_path, drawn):
     assert len(norms) == 1  # one scale shared by every block
     (norm,) = norms.values()
     assert isinstance(norm, LogNorm) and norm.vmax / norm.vmin >= 10
+
+
+def test_titles_name_the_run_parameters(data, tmp_path, drawn):
+    # Format 2 keeps nu, f, c_s, ... in /setup: the title must still name them.
+    assert call("tn_curves", data / "run.h5", "--out", tmp_path / "titled") == 0
+    title = drawn["titled"].axes[0].get_title()
+    assert "$\\nu$ = 0.2" in title and "$f$ = 1.5" in title and "$H$/16" in title
