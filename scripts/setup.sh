@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pytest python3-jsonschema
   python3-pandas python3-yaml snakemake
+  ffmpeg chromium  # movies (figures/movie.py), the report in a browser (tests/browser)
   python3-paraview  # ParaView's VTK: vtkXdmfReader for tests/paraview (python3-vtk9 is built without XDMF)
 )
 for option in "$@"; do
