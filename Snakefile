@@ -5,6 +5,8 @@
 #   snakemake -c2 <sweep>         one sweep (table1, shear_rate, period, mesh, density, long,
 #                                 snapshots, quick, ci, table1_ci, ...) with its table and figures
 #   snakemake -c2 reference_check Table 1 at H/64 against the published values (CI)
+#   snakemake -c2 movies          the animations of `movies` (results/movies/<name>/movie.mp4)
+#   snakemake -c2 explore --config 'point={nu: 0.25, f: 1.6}'   one new point, its figures and summary
 #
 # Wiring only: the study is declared in study/config.yaml (schema study/config.schema.yaml), the
 # rules live in study/rules/*.smk, the logic in study/*.py. See study/README.md.
@@ -34,6 +36,7 @@ include: "study/rules/simulate.smk"
 include: "study/rules/tables.smk"
 include: "study/rules/figures.smk"
 include: "study/rules/report.smk"
+include: "study/rules/movies.smk"
 
 
 rule quick:
@@ -67,3 +70,17 @@ for _sweep in config["sweeps"]:
     rule:
         name: _sweep
         input: lambda wc, sweep=_sweep: sweep_products(sweep)
+
+
+rule movies:
+    """One animation per entry of `movies.runs` (figures/movie.py)."""
+    input: lambda wc: movie_files()
+
+
+# After the sweep targets: it declares the sweep `explore` from --config point={...}.
+include: "study/rules/explore.smk"
+
+
+rule explore:
+    """One point from the command line: metrics, space-time maps, T/N, phase diagram, summary page."""
+    input: lambda wc: explore_files()

@@ -1,4 +1,4 @@
-"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,flutter-boundary} ...`.
+"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,score-rules,flutter-boundary} ...`.
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
 none; 2 bad input (the message on stderr names the file and the problem; no output file is
@@ -96,6 +96,25 @@ def _compare(args: argparse.Namespace) -> int:
     return 0 if result.passed else EXIT_FAILED_CHECK
 
 
+def _score_rules(args: argparse.Namespace) -> int:
+    from analysis import aggregate as agg
+    from analysis.atomic import write_file
+    from analysis.reference import read_reference
+    from analysis.rule_scores import rule_scores, scores_csv, scores_text
+
+    reference = read_reference(args.reference)
+    if args.out is not None:
+        _refuse_input_as_output(args.out, list(args.metrics) + [args.reference])
+    metrics = agg.select([agg.load_metrics(path) for path in args.metrics],
+                         agg.parse_selection(args.select))
+    scores = rule_scores(metrics, reference, args.tolerance)
+    print(scores_text(scores), end="")
+    if args.out is not None:
+        write_file(args.out, scores_csv(scores))
+        print(f"-> {args.out}")
+    return 0
+
+
 def _flutter_boundary(args: argparse.Namespace) -> int:
     try:
         from analysis.flutter import flutter_boundary
@@ -161,6 +180,18 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a cell whose wrong sign or regime is recorded (with its explanation) in the "
                         "ratchet file; reported, not failed (repeatable)")
     p.set_defaults(handler=_compare)
+
+    p = commands.add_parser("score-rules",
+                            help="Table 1 scored under every celerity rule (docs/measurement-rule.md)")
+    p.add_argument("metrics", type=Path, nargs="+", help="metrics JSON files, one per published cell")
+    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
+                   help="published celerities (default %(default)s)")
+    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
+                   help="relative tolerance (default %(default)g)")
+    p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
+                   help="only metrics with this value are scored (repeatable), e.g. elements_per_H=64")
+    p.add_argument("--out", type=Path, help="also write the scores as CSV (one row per rule)")
+    p.set_defaults(handler=_score_rules)
 
     p = commands.add_parser("flutter-boundary",
                             help="print 'nu f_lower f_upper' of the flutter wedge, one line per nu")

@@ -1,6 +1,8 @@
 """Energy balance of a run, from the solver's global series.
 
-The solver writes residual(t) = (E_kin + E_el + D_fric)(t) - (E_kin + E_el)(0) - W_ext(t) (J/m).
+The solver writes residual(t) = (E_kin + E_el + D_fric + W_normal)(t) - (E_kin + E_el)(0) - W_ext(t)
+(J/m), W_normal being the work of the normal contact forces (energy lost at closing contacts;
+docs/contracts.md section 2).
 The error is max |residual| relative to the energy that flowed in the run: the largest of
 max |W_ext|, max |E_el(t) - E_el(0)|, max E_kin and max D_fric (the stored preload energy E_el(0)
 would make any error look small, so it is not the scale).

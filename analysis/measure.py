@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from analysis import celerity as cel
+from analysis import celerity_rules as rules
 from analysis import dissipation, energy, flutter, inversion, opening, pulses, regime, theory, validity
 from analysis.errors import InputError
 from analysis.io import RunData
@@ -62,7 +63,8 @@ class Settings:
     that runs similar to the paper's up to rho or E are measured over the similar window;
     min_speed_rel: slowest front / c_s;
     onset_rel: slip velocity / V0 that marks the first slip; drop_rel: smallest frictional drop / f;
-    sensitivity_threshold_factor: the threshold of the sensitivity re-measurement / threshold.
+    sensitivity_threshold_factor: the threshold of the sensitivity re-measurement / threshold;
+    first_window_length: the window of the `first_100s` rule (s, paper's unit, scaled as the others).
     """
 
     threshold_rel: float = cel.DEFAULT_THRESHOLD_REL
@@ -72,12 +74,14 @@ class Settings:
     onset_rel: float = 0.1
     drop_rel: float = 0.1
     sensitivity_threshold_factor: float = 10.0
+    first_window_length: float = rules.DEFAULT_FIRST_WINDOW_LENGTH
 
     def check(self) -> None:
         """ValueError naming every setting out of range."""
         problems = [f"{name} = {getattr(self, name)} must be > 0" for name in
                     ("threshold_rel", "window_length", "major_duration",
-                     "min_speed_rel", "onset_rel", "drop_rel", "sensitivity_threshold_factor")
+                     "min_speed_rel", "onset_rel", "drop_rel", "sensitivity_threshold_factor",
+                     "first_window_length")
                     if not getattr(self, name) > 0]
         if problems:
             raise ValueError("; ".join(problems))
@@ -193,6 +197,11 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         c_opening_window = cel.celerity_from_fronts(front_map, window_start=opened.t_first, **kw).celerity
     high = cel.celerity_from_fronts(
         find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
+    # Every measurement rule of docs/measurement-rule.md; `celerity` is the default rule's.
+    by_rule = rules.measure_rules(x, t, v, interface.opening, front_map, result,
+                                  slip_threshold=threshold, opening_threshold=open_threshold,
+                                  first_opening_time=opened.t_first,
+                                  first_window_length=settings.first_window_length * unit, **kw)
 
     # 5. T/N: minimum, inversion, frictional drops.
     ratio = inversion.bridge_undefined(series.t, series.T_over_N)
@@ -287,6 +296,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "celerity_agreement": agreement,
         "celerity_opening_window": c_opening_window,
         "celerity_window_sensitivity": _relative(c_opening_window, c_p),
+        **rules.rule_metrics(by_rule),
         "celerity_high_threshold": high.celerity,
         "celerity_threshold_sensitivity": _relative(high.celerity, c_p),
         "regime": regime.regime(c_p, c_s, c_l),

@@ -35,7 +35,9 @@ class Run:
     def __init__(self, path):
         self._data = load_run(path)
         self.path = self._data.path
-        self.attrs = self._data.attrs
+        # Root attributes and, from format 2 on, the derived constants of /setup (nu, f, c_s, H,
+        # ...) that titles and labels name.
+        self.attrs = {**self._data.attrs, **getattr(self._data, "setup", {})}
         self.config = self._data.config
 
     def attr(self, name):

@@ -47,6 +47,17 @@ def line_label(key, fixed):
     return ", ".join(parts)
 
 
+def at_least_span(ax, relative):
+    """Widen a linear y-range to +-relative of its middle: nearly equal values (the point of a
+    convergence plot) then get readable ticks instead of an offset and a row of equal labels."""
+    lo, hi = ax.get_ylim()
+    middle, half = (lo + hi) / 2, (hi - lo) / 2
+    half = max(half, relative * abs(middle))
+    if half > 0:
+        ax.set_ylim(middle - half, middle + half)
+    ax.ticklabel_format(axis="y", style="plain", useOffset=False)
+
+
 def main(argv=None):
     # 1. Parse options, read the runs, group them into lines along the parameter.
     args = parse_args(argv)
@@ -65,25 +76,30 @@ def main(argv=None):
     varying = [i for i in range(len(fixed)) if i not in shared]
 
     # 2. Three panels.
-    fig, axes = _style.plt.subplots(1, 3, figsize=(11.0, 3.8))
+    # Printed at the text width (6.5 in): 9 pt text prints at ~7 pt.
+    fig, axes = _style.plt.subplots(1, 3, figsize=(8.4, 3.3))
     panels = [("celerity", "front celerity $c_p/c_s$ (-)"),
               ("min_T_over_N", "minimum $T/N$ (-)"),
-              ("max_opening", "maximum opening $u_y$ (m)")]
+              ("max_opening", "maximum opening $u_y$ (mm)")]
     for k, (key, runs) in enumerate(sorted(lines.items(), key=lambda item: str(item[0]))):
         color = COLORS[k % len(COLORS)]
         label = line_label([key[i] for i in varying], [fixed[i] for i in varying]) or None
         x = [r[args.param] for r in runs]
         axes[0].plot(x, [r["celerity_over_cs"] for r in runs], "o-", color=color, label=label)
         axes[1].plot(x, [r["min_T_over_N"] for r in runs], "o-", color=color, label=label)
-        axes[2].plot(x, [r["max_opening"] for r in runs], "o-", color=color, label=label)
+        axes[2].plot(x, [1e3 * r["max_opening"] for r in runs], "o-", color=color, label=label)
     for level, text in ((1.0, "$c_s$"), (math.sqrt(2.0), "$\\sqrt{2}\\,c_s$")):
         axes[0].axhline(level, color="0.5", ls=":", lw=0.9)
         axes[0].annotate(text, (1.0, level), xycoords=("axes fraction", "data"), fontsize=7,
                          xytext=(-2, 2), textcoords="offset points", ha="right", color="0.4")
     axes[1].axhline(0.0, color="0.5", lw=0.8)
     openings = [r["max_opening"] for runs in lines.values() for r in runs]
-    if all(isinstance(v, float) and v > 0 for v in openings):
+    # Within a decade a log axis labels its ticks with rounded, identical numbers: linear then.
+    log_opening = all(isinstance(v, float) and v > 0 for v in openings) and max(openings) > 10 * min(openings)
+    if log_opening:
         axes[2].set_yscale("log")
+    for ax in axes[:2] if log_opening else axes:
+        at_least_span(ax, relative=0.05)
 
     # 3. Axes and title.
     name, scale, heading = PARAMS[args.param]

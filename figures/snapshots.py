@@ -9,12 +9,15 @@ the deformed layer, the displacement since the first snapshot magnified by --sca
 outline is the layer at the first snapshot, i.e. before the slip if the first snapshot is taken
 then); beneath it the slip velocity and the opening against the reference position x, at the
 interface output time nearest to the snapshot. All blocks share their colour scale and axes; the
-x-range covers the whole magnified layer.
+colour scale is logarithmic (from V0, or 1e-4 of the largest speed, up to the largest speed) so that
+the slow early snapshots are not black beside the fast pulses of the later ones; the x-range covers
+the whole magnified layer.
 """
 import argparse
 import string
 
 import numpy as np
+from matplotlib.colors import LogNorm
 from matplotlib.gridspec import GridSpec
 from matplotlib.patches import Rectangle
 
@@ -76,7 +79,10 @@ def main(argv=None):
 
     # 2. Shared scales: one colour scale for |v|, one y-range per profile kind.
     speeds = [np.hypot(v[:, 0], v[:, 1]) for _, _, _, v in snapshots]
-    norm = _style.plt.Normalize(0.0, max(float(s.max()) for s in speeds) or 1.0)
+    v_max = max(float(s.max()) for s in speeds) or 1.0
+    v_floor = min(max(run.attr("V0"), 1e-4 * v_max), 0.1 * v_max)
+    norm = LogNorm(v_floor, v_max)
+    speeds = [np.maximum(s, v_floor) for s in speeds]  # below the floor: the floor's colour
     xs = np.append(x, lam)  # periodic: close the profiles at x = lambda
     close = lambda a: np.concatenate([a, a[:, :1]], axis=1)  # noqa: E731
     slip_velocity, opening = close(slip_velocity), close(opening)
@@ -88,9 +94,9 @@ def main(argv=None):
     n = len(snapshots)
     columns = max(1, min(args.columns, n))
     block_rows = -(-n // columns)
-    width = 4.0
+    width = 2.9  # per block: printed at the text width (6.5 in), 3 blocks keep 9 pt text at ~6 pt
     map_height = max(0.8, width * 0.8 * (1.35 * H) / lam)
-    heights = [map_height, 0.75, 0.75, 0.45]
+    heights = [map_height, 0.75, 0.75, 0.7]
     fig = _style.plt.figure(figsize=(width * columns + 0.9, sum(heights) * block_rows + 1.0))
     grid = GridSpec(4 * block_rows, columns, figure=fig, height_ratios=heights * block_rows,
                     hspace=0.12, wspace=0.28, left=0.06, right=0.9, top=1 - 0.9 / fig.get_figheight(),
@@ -116,7 +122,7 @@ def main(argv=None):
         ax_v.plot(xs, slip_velocity[k], color="tab:orange", lw=1.0)
         ax_v.set_ylim(v_lim)
         ax_v.set_ylabel("$\\dot u_x$ (m/s)")
-        ax_map.set_title(f"profiles below at $t$ = {t_if:.1f} s", loc="right",
+        ax_map.set_title(f"profiles at {t_if:.1f} s", loc="right",
                          fontsize=7, color="0.3")
         ax_o.fill_between(xs, 0.0, opening[k], color="tab:cyan", lw=0.8, ec="tab:blue")
         ax_o.set_ylim(o_lim)
@@ -129,7 +135,7 @@ def main(argv=None):
 
     # 4. Colour bar and title.
     cax = fig.add_axes([0.92, 0.3, 0.013, 0.4])
-    fig.colorbar(image, cax=cax).set_label("material velocity $|\\mathbf{v}|$ (m/s)")
+    fig.colorbar(image, cax=cax, extend="min").set_label("material velocity $|\\mathbf{v}|$ (m/s)")
     fig.suptitle(f"Material velocity in the layer (displacement since $t$ = {snapshots[0][1]:.1f} s "
                  f"magnified $\\times${args.scale:g}; dashed: layer at that time), interface slip "
                  f"velocity and opening\n{label}", fontsize=9)

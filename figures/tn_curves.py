@@ -12,11 +12,39 @@ the title carries those they share.
 """
 import argparse
 import os
+import re
 
 import numpy as np
 
 import _style
 from _data import InputError, open_run
+
+
+# The pipeline's legend texts (study.sweeps.label: 'V0/c_s=1e-06', 'nu=0.20 f=1.50') as mathtext.
+_PAIR = re.compile(r"(nu|f|V0/c_s|lambda/H|H/h|rho|seed|dt c_s)=(\S+)")
+_SYMBOLS = {"nu": "$\\nu$", "f": "$f$", "V0/c_s": "$V_0/c_s$", "lambda/H": "$\\lambda/H$", "H/h": "$H/h$",
+            "rho": "$\\rho$", "seed": "seed", "dt c_s": "$\\Delta t\\, c_s$"}
+
+
+def pretty(label):
+    """'V0/c_s=1e-06' -> '$V_0/c_s$ = $10^{-6}$'; text that is not such pairs is kept."""
+    pairs = _PAIR.findall(label)
+    if not pairs or _PAIR.sub("", label).strip():
+        return label
+    parts = []
+    for key, text in pairs:
+        try:
+            value = _style.sci(float(text))
+        except ValueError:
+            value = text
+        parts.append(f"{_SYMBOLS[key]} = {value}")
+    return ", ".join(parts)
+
+
+def _legend_bottom(fig, ax, legend):
+    """The lower edge of a legend in data units of the y-axis."""
+    fig.canvas.draw()
+    return ax.transData.inverted().transform(legend.get_window_extent())[0][1]
 
 
 def parse_args(argv):
@@ -50,7 +78,7 @@ def main(argv=None):
     shared = [k for k in keys if all(c["parts"].get(k) == curves[0]["parts"][k] for c in curves)]
     differing = [k for k in dict.fromkeys(k for c in curves for k in c["parts"]) if k not in shared]
     if args.labels:
-        labels = args.labels
+        labels = [pretty(label) for label in args.labels]
     elif differing:
         labels = [", ".join(c["parts"][k] for k in differing if k in c["parts"]) for c in curves]
     else:
@@ -58,7 +86,8 @@ def main(argv=None):
     shared = ", ".join(curves[0]["parts"][k] for k in shared)
 
     # 3. Draw: gray first, the highlighted run on top in red.
-    fig, ax = _style.plt.subplots(figsize=(6.4, 3.6))
+    # Printed at half the text width (3.2 in): at this size its 9 pt text prints at ~6 pt.
+    fig, ax = _style.plt.subplots(figsize=(4.6, 3.4))
     grays = np.linspace(0.25, 0.7, max(1, len(curves) - 1))
     others = [i for i in range(len(curves)) if i != args.highlight]
     for shade, i in zip(grays, others):
@@ -77,8 +106,12 @@ def main(argv=None):
     ax.set_xlabel("time $t$ (s)  [$t$ = 0: start of the dynamic stage]")
     ax.set_ylabel("frictional force ratio $T/N$ (-)")
     ax.set_title(f"Global frictional force ratio $T/N$\n{shared}")
-    if len(curves) > 1 or args.labels:
-        ax.legend(loc="lower left", framealpha=0.9)
+    if len(curves) > 1:  # where it covers the fewest curve points, if that is above T/N = 0
+        legend = ax.legend(loc="best", framealpha=0.9, fontsize=7)
+        bottom = _legend_bottom(fig, ax, legend)
+        if bottom < 0.0:  # it would hide the inversion T/N < 0: beside the axes instead
+            legend.remove()
+            ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=7)
     _style.save(fig, args.out)
     return 0
 

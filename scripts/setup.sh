@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what slidewave needs from Debian 12 packages, only what is missing (idempotent).
-# Works as root or through sudo. Usage: scripts/setup.sh [--latex] [--slurm] [--getfem]
+# Works as root or through sudo. Usage: scripts/setup.sh [--latex] [--test] [--slurm] [--getfem]
+# --test adds what only the tests use (scripts/test.sh passes it): ParaView's VTK for tests/paraview
+# (~540 MB) and Chromium for the labelled browser test.
 set -euo pipefail
 
 packages=(
@@ -9,14 +11,18 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pytest python3-jsonschema
   python3-pandas python3-yaml snakemake
-  python3-paraview  # ParaView's VTK: vtkXdmfReader for tests/paraview (python3-vtk9 is built without XDMF)
+  ffmpeg  # movies (figures/movie.py)
 )
 for option in "$@"; do
   case "$option" in
     --latex) packages+=(latexmk texlive-latex-recommended) ;;
+    --test) packages+=(
+        python3-paraview  # ParaView's VTK: vtkXdmfReader for tests/paraview (python3-vtk9 has no XDMF reader)
+        chromium          # the report in a real browser (tests/browser, marker `browser`)
+      ) ;;
     --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
     --getfem) packages+=(python3-getfem) ;;
-    *) echo "setup.sh: unknown option $option (allowed: --latex --slurm --getfem)" >&2; exit 2 ;;
+    *) echo "setup.sh: unknown option $option (allowed: --latex --test --slurm --getfem)" >&2; exit 2 ;;
   esac
 done
 

@@ -8,10 +8,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PYTHON=${SLIDEWAVE_PYTHON:-/usr/bin/python3}
 export USER=${USER:-$(id -un)}  # snakemake reads it
-bash scripts/setup.sh --latex
+bash scripts/setup.sh --latex --test
 bash scripts/build.sh
 ctest --test-dir build -LE long --output-on-failure -j2
-"$PYTHON" -m pytest -q tests/analysis tests/figures tests/pipeline tests/faults
+"$PYTHON" -m pytest -q tests/analysis tests/figures tests/pipeline tests/faults tests/config tests/paraview
 copy="$(mktemp -d)/slidewave"
 mkdir "$copy"
 git ls-files -z --cached --others --exclude-standard | xargs -0 cp --parents -t "$copy"

@@ -9,7 +9,13 @@
 #
 # State, logs and the generated slurm.conf live in $SLIDEWAVE_SLURM_DIR (default
 # /tmp/slidewave-slurm). Client commands need `export SLURM_CONF=$SLIDEWAVE_SLURM_DIR/slurm.conf`
-# (`start` prints it). Recipe: ../shared/ENVIRONMENT-NOTES.md ("A single-node SLURM").
+# (`start` prints it). Why the generated slurm.conf (write_conf) looks as it does:
+#   - select/cons_tres with memory as a resource and DefMemPerCPU: otherwise a job without --mem takes
+#     the whole node and jobs run one at a time;
+#   - no accounting and MinJobAge=3600: Snakemake's --slurm then asks scontrol, which must still see
+#     finished jobs; proctrack/linuxproc and task/none: no systemd or cgroups needed;
+#   - NodeName=localhost works whatever the host name is; the daemons run in the foreground (-D),
+#     started in the background and stopped by their recorded PIDs.
 set -euo pipefail
 
 DIR=${SLIDEWAVE_SLURM_DIR:-/tmp/slidewave-slurm}

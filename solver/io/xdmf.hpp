@@ -6,6 +6,8 @@
 //   RUN.interface.xdmf  the interface series: a line over x (rectilinear, 1 x n_c), one grid per
 //                       output time, with slip_velocity, slip, opening, normal_traction,
 //                       tangential_traction and state as node attributes (hyperslabs of /interface)
+// ParaView opens both with its "XDMF Reader" (vtkXdmfReader, XDMF 2; tests/paraview); its Xdmf3
+// readers read the bulk file but leave out the hyperslab attributes of the interface file.
 // Both are written under a temporary name first and renamed only once RUN.h5 is in place, so a
 // sidecar never points at a missing file.
 #include <string>
