@@ -20,9 +20,8 @@ if "SLIDEWAVE_BIN" not in os.environ:
 
 
 # `--resume`: continue from run.h5's checkpoint when one exists for the same config and build, else
-# start from the beginning, so that a job killed at a time limit continues where it stopped. Passed
-# only to a solver that has the option (asked at run time: the binary may be built by this workflow).
-RESUME_OPTION = "$({input.solver} run --help 2>&1 | grep -q -e --resume && echo --resume)"
+# start from the beginning, so that a job killed at a time limit continues where it stopped.
+RESUME_OPTION = "--resume"
 
 
 rule configure:
