@@ -13,6 +13,35 @@ from analysis.errors import InputError  # noqa: E402,F401
 from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
 
 
+#: How a category or regime key reads in a table or sentence. `no_slip` is a run whose slip velocity
+#: never exceeds the slip threshold: the interface slides uniformly with the top (e.g. at f = 0.5),
+#: it does not stick; `uniform_slip` slips above the threshold without ever localizing.
+LABELS = {
+    "no_slip": "uniform sliding",
+    "uniform_slip": "uniform slip, no front",
+    "intersonic_opening_inversion": "intersonic opening, inversion",
+    "stop_after_opening": "stopped after opening",
+    "t_end": "end time",
+    "contact_not_converged": "contact not converged",
+}
+
+
+def label(value) -> str:
+    """A category, regime or end reason as text: LABELS, else underscores become spaces."""
+    return LABELS.get(str(value), str(value).replace("_", " "))
+
+
+def latex_number(text: str) -> str:
+    """A formatted number as LaTeX math text: '3.8e-14' -> '3.8\\times10^{-14}', '1e-05' -> '10^{-5}'."""
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    power = f"10^{{{int(exponent)}}}"
+    if float(mantissa) == 1:
+        return power
+    return ("-" + power) if float(mantissa) == -1 else f"{mantissa}\\times{power}"
+
+
 def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
     """[(label, path)] of 'LABEL=PATH' arguments; the label may contain '=', the path does not.
 
