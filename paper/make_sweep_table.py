@@ -5,7 +5,7 @@
         --columns elements_per_H celerity category min_T_over_N end_reason -o generated/regularized.tex
 
 Each input is LABEL=all_metrics.csv (one row per run, written by `python3 -m analysis aggregate`);
-with more than one input a first column `set` holds the label. Rows keep the input order and, within
+with more than one input each input's rows follow a heading row with its label. Rows keep the input order and, within
 an input, are sorted by the listed parameter columns (COLUMNS entries of kind 'param'). Column
 headings and number formats come from COLUMNS, so that every table of the report spells a quantity
 the same way; an empty or non-finite value prints as a dash, a missing column is an error. Only
@@ -115,11 +115,13 @@ def read(path: str, columns: list[str]) -> list[dict]:
 def table(sets: list[tuple[str, list[dict]]], columns: list[str]) -> str:
     labelled = len(sets) > 1
     params = [c for c in columns if COLUMNS[c][1] == "param"]
-    lines = [r"\begin{tabular}{" + ("l" if labelled else "") + "r" * len(columns) + "}", r"\toprule",
-             " & ".join((["set"] if labelled else []) + [heading(COLUMNS[c][0]) for c in columns]) + r" \\",
-             r"\midrule"]
+    lines = [r"\begin{tabular}{" + "r" * len(columns) + "}", r"\toprule",
+             " & ".join(heading(COLUMNS[c][0]) for c in columns) + r" \\"]
     used = set()
     for set_label, rows in sets:
+        lines.append(r"\midrule")
+        if labelled:  # a heading row per input, so that the label takes no column
+            lines.append(rf"\multicolumn{{{len(columns)}}}{{l}}{{\emph{{{set_label}}}}} \\")
         rows = sorted(rows, key=lambda r: tuple(r.get(p) if isinstance(r.get(p), float) else math.inf
                                                 for p in params))
         for r in rows:
@@ -128,7 +130,7 @@ def table(sets: list[tuple[str, list[dict]]], columns: list[str]) -> str:
                 mark = marks(r, c) if cell(r.get(c), COLUMNS[c][2]) != "--" else ""
                 used.update(m for m in NOTES if m in mark)
                 cells.append(cell(r.get(c), COLUMNS[c][2]) + (rf"\textsuperscript{{{mark}}}" if mark else ""))
-            lines.append(" & ".join(([set_label] if labelled else []) + cells) + r" \\")
+            lines.append(" & ".join(cells) + r" \\")
     lines += [r"\bottomrule", r"\end{tabular}"]
     if used:  # below the tabular, wrapped at the text width
         lines.append(r"\par\smallskip{\footnotesize " + "; ".join(f"{m}: {NOTES[m]}" for m in sorted(used)) + r".\par}")

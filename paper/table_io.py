@@ -20,7 +20,7 @@ LABELS = {
     "no_slip": "uniform sliding",
     "uniform_slip": "uniform slip, no front",
     "intersonic_opening_inversion": "intersonic opening, inversion",
-    "stop_after_opening": "stopped after opening",
+    "stop_after_opening": "after opening",
     "t_end": "end time",
     "contact_not_converged": "contact not converged",
 }
