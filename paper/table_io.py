@@ -10,16 +10,13 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
 from analysis.errors import InputError  # noqa: E402,F401
+from analysis.regime import category_label  # noqa: E402
 from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
 
 
-#: How a category or regime key reads in a table or sentence. `no_slip` is a run whose slip velocity
-#: never exceeds the slip threshold: the interface slides uniformly with the top (e.g. at f = 0.5),
-#: it does not stick; `uniform_slip` slips above the threshold without ever localizing.
-LABELS = {
-    "no_slip": "uniform sliding",
-    "uniform_slip": "uniform slip, no front",
-    "intersonic_opening_inversion": "intersonic opening, inversion",
+#: How an end reason reads; categories read as analysis.regime.CATEGORY_LABELS says (e.g. `no_slip`
+#: is "uniform sliding": the interface slides with the top, below the slip threshold).
+END_REASON_LABELS = {
     "stop_after_opening": "after opening",
     "t_end": "end time",
     "contact_not_converged": "contact not converged",
@@ -27,8 +24,8 @@ LABELS = {
 
 
 def label(value) -> str:
-    """A category, regime or end reason as text: LABELS, else underscores become spaces."""
-    return LABELS.get(str(value), str(value).replace("_", " "))
+    """A category, regime or end reason as text (underscores become spaces otherwise)."""
+    return END_REASON_LABELS.get(str(value)) or category_label(str(value))
 
 
 def latex_number(text: str) -> str:
