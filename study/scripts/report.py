@@ -15,7 +15,8 @@ manifest names (built by study/rules/report.smk):
 Figures are embedded as base64 PNG under a caption that says what they show (CAPTIONS, by the
 figure's kind), for which run, and the script that drew it; wide figures (more than twice as wide as
 high) take the page width, others half of it. The Table 1 block appears only for sweeps that compare
-with the published Table 1 (product `comparison`). Wide tables scroll on screen and wrap in print.
+with the published Table 1 (product `comparison`). Wide tables scroll on a wide screen and wrap in
+print and on a narrow screen (under 60em: the same rules as print).
 Nothing is computed here: deviations, signs, regimes, categories and the celerity's window
 sensitivity are the aggregate's columns or metrics.json keys, wall time and memory Snakemake's
 benchmark of `simulate`; categories read as analysis.regime.CATEGORY_LABELS says.
@@ -38,9 +39,12 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from analysis.regime import category_label  # noqa: E402
 
-#: metrics.json keys shown per run, when present.
-RUN_KEYS = ("category", "regime", "onset_time", "min_T_over_N", "max_opening",
-            "pulse_count", "energy_balance_error", "end_reason")
+#: metrics.json keys shown per run, when present, and their column headings.
+RUN_KEYS = {"category": "category", "regime": "regime", "onset_time": "slip onset (s)",
+            "min_T_over_N": "min T/N", "max_opening": "max opening (m)", "pulse_count": "major pulses",
+            "energy_balance_error": "energy residual", "end_reason": "run ended by"}
+#: Text columns of the runs table (left-aligned, may wrap).
+TEXT_KEYS = ("category", "regime", "end_reason")
 
 #: What a figure shows, by the start of its file name (figure_files in study/rules/common.smk).
 CAPTIONS = {
@@ -65,8 +69,9 @@ figure { display: inline-block; margin: 0.5em 0; width: 49%; vertical-align: top
 figure.wide { width: 100%; }
 figure img { max-width: 100%; } figcaption { font-size: 0.85em; color: #444; }
 div.scroll { max-width: 100%; overflow-x: auto; }
-@media print { div.scroll { overflow: visible; } table { font-size: 0.7em; }
-  th, td { white-space: normal; overflow-wrap: anywhere; } }
+@media print, (max-width: 60em) { div.scroll { overflow: visible; } table { font-size: 0.7em; }
+  th, td { white-space: normal; padding: 0.1em 0.25em; } td.l { overflow-wrap: anywhere; }
+  table.runs { table-layout: fixed; width: 100%; } table.runs th, table.runs td { overflow-wrap: anywhere; } }
 pre { background: #f7f7f7; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
 """
 
@@ -191,9 +196,9 @@ def figure_html(path: str) -> str:
 
 
 def runs_html(runs: list[dict]) -> str:
-    out = ["<div class=scroll><table><tr><th class=l>run</th><th>c_p (m/s) &plusmn; window</th>"
-           + "".join(f"<th>{k}</th>" for k in RUN_KEYS)
-           + "<th>t_end (s)</th><th>stop after opening (s)</th><th>wall (s)</th><th>max RSS (MB)</th></tr>"]
+    out = ["<div class=scroll><table class=runs><tr><th class=l>run</th><th>c_p (m/s) &plusmn; window</th>"
+           + "".join(f"<th{' class=l' if k in TEXT_KEYS else ''}>{heading}</th>" for k, heading in RUN_KEYS.items())
+           + "<th>end time (s)</th><th>stop after opening (s)</th><th>wall (s)</th><th>memory (MB)</th></tr>"]
     total = 0.0
     for run in runs:
         directory = Path(run["dir"])
@@ -203,11 +208,13 @@ def runs_html(runs: list[dict]) -> str:
         wall = _number(bench.get("s", ""))
         total += wall if math.isfinite(wall) else 0.0
         values = {**metrics, "category": category_label(metrics["category"]) if "category" in metrics else None}
-        cells = "".join(f"<td>{fmt(values.get(k))}</td>" for k in RUN_KEYS)
+        cells = "".join(f"<td{' class=l' if k in TEXT_KEYS else ''}>{fmt(values.get(k))}</td>" for k in RUN_KEYS)
         out.append(f"<tr><td class=l>{html.escape(run['name'])}</td><td>{celerity_text(metrics)}</td>{cells}<td>{fmt(config.get('t_end'), 6)}</td>"
                    f"<td>{fmt(config.get('stop_after_opening'))}</td><td>{fmt(wall)}</td>"
                    f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
     out.append("</table></div>")
+    out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
+               "the run. Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")
     return "\n".join(out)
 
