@@ -71,6 +71,17 @@ rule fig_celerity_vs_nu:
     shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
 
 
+rule fig_deviation_map:
+    """Deviation from the published celerity over (nu, f), reproduced cells and other categories marked."""
+    input:
+        script=figure_script("deviation_map"),
+        table="results/{sweep}/table/table1.csv",
+    output: multiext("results/{sweep}/figures/deviation_map", *FIGURE_EXTS)
+    params: prefix="results/{sweep}/figures/deviation_map"
+    log: "results/{sweep}/logs/fig_deviation_map.log"
+    shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
+
+
 rule fig_pulse_spacing:
     """Pulse spacing against lambda/H with l = 2H sqrt(c_p^2/c_s^2 - 1)."""
     input:

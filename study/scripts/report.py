@@ -54,6 +54,7 @@ CAPTIONS = {
     "snapshots": "Material velocity in the deformed layer, slip velocity and opening along the interface at successive times",
     "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding",
     "celerity_vs_nu": "Slip-front celerity against nu, regenerated and published, with c_s, sqrt(2) c_s and c_l",
+    "deviation_map": "Deviation of the regenerated celerity from the published one for each published cell (framed: reproduced; crossed: another category than published)",
     "tn_curves": "Global friction ratio T/N against time",
     "pulse_spacing": "Number and spacing of the major slip pulses against lambda/H, with the Mach-wave spacing",
     "convergence": "Celerity, minimum T/N and maximum opening against the swept parameter",

@@ -15,7 +15,7 @@ GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5", "
 
 
 def report_jobs(data):
-    """The 20 figures reproduction.tex expects, as the pipeline would make them:
+    """The 21 figures reproduction.tex expects, as the pipeline would make them:
     {name: (script, args...)} with paths into the synthetic data folder."""
     jobs = {
         "fig2a_slip_velocity": ("spacetime", data / "run.h5", "--field", "slip_velocity",
@@ -30,6 +30,7 @@ def report_jobs(data):
         "fig4a_phase_diagram": ("phase_diagram", data / "all_metrics.csv", "--flutter",
                                 data / "flutter.txt", "--where", *GRID),
         "fig4b_celerity_vs_nu": ("celerity_vs_nu", data / "table1.csv"),
+        "fig4g_deviation_map": ("deviation_map", data / "table1.csv"),
         "fig4c_state": ("spacetime", data / "run.h5", "--field", "state"),
         "fig4d_state": ("spacetime", data / "run.h5", "--field", "state", "--metrics",
                         data / "metrics.json"),

@@ -122,6 +122,7 @@ def drop_column(source, target, column):
 @pytest.mark.parametrize("script,source,column,extra", [
     ("phase_diagram", "all_metrics.csv", "category", ["--flutter", "flutter.txt"]),
     ("celerity_vs_nu", "table1.csv", "published", []),
+    ("deviation_map", "table1.csv", "category_match", []),
     ("pulse_spacing", "all_metrics.csv", "pulse_spacing", []),
     ("convergence", "all_metrics.csv", "max_opening", ["--param", "rho"]),
     ("convergence", "all_metrics.csv", "rho", ["--param", "rho"]),
