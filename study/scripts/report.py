@@ -56,6 +56,7 @@ CAPTIONS = {
     "celerity_vs_nu": "Slip-front celerity against nu, regenerated and published, with c_s, sqrt(2) c_s and c_l",
     "deviation_map": "Deviation of the regenerated celerity from the published one for each published cell (framed: reproduced; crossed: another category than published)",
     "tn_curves": "Global friction ratio T/N against time",
+    "tn_aligned": "T/N against the time since the start of each run's first frictional drop (x: the run stopped during the drop)",
     "pulse_spacing": "Number and spacing of the major slip pulses against lambda/H, with the Mach-wave spacing",
     "convergence": "Celerity, minimum T/N and maximum opening against the swept parameter",
 }

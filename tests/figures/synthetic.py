@@ -271,6 +271,9 @@ def write_all(folder):
     write_sweeps(folder, metrics_rows())
     write_csv(folder / "table1.csv", table1_rows())
     (folder / "flutter.txt").write_text(FLUTTER)
+    for name, start, complete in (("v1e-06", 1000.0, 1), ("", 950.0, 1), ("v0.0001", 900.0, 0)):
+        (folder / f"metrics{'_' + name if name else ''}_drop.json").write_text(json.dumps(
+            {"first_drop_start_time": start, "n_complete_drops": complete}))
     (folder / "metrics.json").write_text(json.dumps(
         {"celerity": 0.85, "celerity_window": [800.0, 1000.0], "regime": "intersonic"}))
     (folder / "summary.json").write_text(json.dumps(  # keys of `analysis aggregate`
