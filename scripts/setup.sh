@@ -13,7 +13,7 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
-    --latex) packages+=(latexmk texlive-latex-recommended) ;;
+    --latex) packages+=(latexmk texlive-latex-recommended poppler-utils) ;;  # poppler: pdftoppm renders the paper in tests
     --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
     --getfem) packages+=(python3-getfem) ;;
     *) echo "setup.sh: unknown option $option (allowed: --latex --slurm --getfem)" >&2; exit 2 ;;
