@@ -6,12 +6,19 @@ Outputs (all written together or not at all):
   derived from it are empty when no metrics file is given for the cell or its celerity is undefined.
   deviation_rel = (celerity - published) / |published|; within_tol = |deviation_rel| <= tolerance;
   sign_match, regime_match compare with the published celerity and its regime (from c_s, c_l of
-  Table 1's material). end_reason is filled only for a run that did not complete (e.g.
+  Table 1's material). published_category is the category the published cell implies (every cell of
+  the paper's Table 1 is an opening wave: ``<regime>_<direction>_opening``, ``intersonic_opening``
+  for a forward intersonic one, inversion not distinguished); category_match compares the run's
+  category with it (``intersonic_opening_inversion`` counts as ``intersonic_opening``); reproduced =
+  within_tol and sign_match and regime_match and category_match: a cell whose run shows another
+  outcome (no opening, no front) is never counted as reproduced, however close its celerity.
+  celerity_quality and celerity_window_sensitivity are the run's (its c_p's uncertainty). end_reason is filled only for a run that did not complete (e.g.
   ``contact_not_converged``): such a row is shown, and flagged, never passed off as a complete run.
 - ``table1.md``, ``table1.tex`` (booktabs tabular in the paper's layout: f rows, nu columns; for
   each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
 - ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
-  regime_matches, median_abs_deviation, max_abs_deviation, tolerance, missing_cells.
+  regime_matches, category_matches, reproduced, median_abs_deviation, max_abs_deviation, tolerance,
+  missing_cells, category_mismatches (the compared cells whose category differs, "nu=N f=F").
 - ``all_metrics.csv``: one row per metrics file, every scalar key, then the columns derived from
   them for tables and figures (``DERIVED_COLUMNS``, see ``derived_columns``), so that ``paper/`` and
   ``figures/`` only select and format.
@@ -32,10 +39,11 @@ from analysis.reference import ReferenceCell, cell_key
 
 TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
-                  "min_T_over_N", "end_reason")
+                  "min_T_over_N", "published_category", "category_match", "reproduced",
+                  "celerity_quality", "celerity_window_sensitivity", "end_reason")
 DEFAULT_TOLERANCE = 0.05
 DERIVED_COLUMNS = ("celerity_over_cs", "first_drop_start_after_onset", "first_drop_duration",
-                   "inside_flutter_wedge")
+                   "first_drop_complete", "inside_flutter_wedge")
 
 
 # --------------------------------------------------------------------------------------------------
@@ -144,13 +152,24 @@ def _difference(m: dict[str, Any], later: str, earlier: str) -> float | None:
     return float(a) - float(b)
 
 
+def _first_drop_complete(m: dict[str, Any]) -> bool | None:
+    n_drops, n_complete = m.get("n_drops"), m.get("n_complete_drops")
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+               for x in (n_drops, n_complete)) or n_drops < 1:
+        return None
+    return n_complete >= 1
+
+
 def derived_columns(m: dict[str, Any],
                     flutter: list[tuple[float, float, float]] | None = None) -> dict[str, Any]:
     """The DERIVED_COLUMNS of one run (None where an input is missing or undefined).
 
     celerity_over_cs = celerity / c_s (-); first_drop_start_after_onset = first_drop_start_time -
     onset_time (s); first_drop_duration = first_drop_bottom_time - first_drop_start_time (s);
-    inside_flutter_wedge (inside_flutter_wedge; only with a flutter boundary).
+    first_drop_complete = n_complete_drops >= 1 (drops are found in time order and only the last can
+    be cut by the end of the run: False means the first drop's bottom, duration and min T/N are
+    those reached when the run stopped), None without a drop; inside_flutter_wedge
+    (inside_flutter_wedge; only with a flutter boundary).
     """
     c, c_s = m.get("celerity"), m.get("c_s")
     ratio = None
@@ -161,6 +180,7 @@ def derived_columns(m: dict[str, Any],
         "celerity_over_cs": ratio,
         "first_drop_start_after_onset": _difference(m, "first_drop_start_time", "onset_time"),
         "first_drop_duration": _difference(m, "first_drop_bottom_time", "first_drop_start_time"),
+        "first_drop_complete": _first_drop_complete(m),
         "inside_flutter_wedge": (inside_flutter_wedge(flutter, _number(m["nu"]), _number(m["f"]))
                                  if flutter else None),
     }
@@ -168,6 +188,20 @@ def derived_columns(m: dict[str, Any],
 
 # --------------------------------------------------------------------------------------------------
 # Table 1
+
+
+def published_category(cell: ReferenceCell) -> str:
+    """The category a published cell implies: every cell of the paper's Table 1 is an opening wave
+    (the paper's Fig. 4a), in the direction of its celerity's sign and its regime."""
+    direction = "forward" if cell.celerity > 0 else "backward"
+    if cell.regime == "intersonic" and direction == "forward":
+        return "intersonic_opening"
+    return f"{cell.regime}_{direction}_opening"
+
+
+def category_matches(category: Any, published: str) -> bool:
+    """The run's category is the published one (with or without inversion of T/N)."""
+    return isinstance(category, str) and category.removesuffix("_inversion") == published
 
 
 def incomplete_reason(metrics: dict[str, Any]) -> str | None:
@@ -195,11 +229,15 @@ def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
     for cell in reference:
         m = by_cell.get(cell.key)
         row: dict[str, Any] = {column: None for column in TABLE1_COLUMNS}
-        row.update(nu=cell.nu, f=cell.f, published=cell.celerity, published_regime=cell.regime)
+        row.update(nu=cell.nu, f=cell.f, published=cell.celerity, published_regime=cell.regime,
+                   published_category=published_category(cell))
         if m is not None:
             row.update(category=m.get("category"), opening=m.get("opening"),
                        inversion=m.get("inversion"), min_T_over_N=m.get("min_T_over_N"),
-                       regime=m.get("regime"), end_reason=incomplete_reason(m))
+                       regime=m.get("regime"), end_reason=incomplete_reason(m),
+                       category_match=category_matches(m.get("category"), row["published_category"]),
+                       celerity_quality=m.get("celerity_quality"),
+                       celerity_window_sensitivity=m.get("celerity_window_sensitivity"))
             c = _number(m["celerity"])
             if math.isfinite(c):
                 deviation = (c - cell.celerity) / abs(cell.celerity)
@@ -207,6 +245,8 @@ def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
                            sign_match=(c > 0) == (cell.celerity > 0),
                            regime_match=m.get("regime") == cell.regime,
                            within_tol=abs(deviation) <= tolerance)
+                row["reproduced"] = bool(row["within_tol"] and row["sign_match"] and row["regime_match"]
+                                         and row["category_match"])
         rows.append(row)
     return rows
 
@@ -224,10 +264,13 @@ def summarize(rows: list[dict[str, Any]], tolerance: float) -> dict[str, Any]:
         "within_tolerance": sum(bool(r["within_tol"]) for r in compared),
         "sign_matches": sum(bool(r["sign_match"]) for r in compared),
         "regime_matches": sum(bool(r["regime_match"]) for r in compared),
+        "category_matches": sum(bool(r["category_match"]) for r in compared),
+        "reproduced": sum(bool(r["reproduced"]) for r in compared),
         "median_abs_deviation": median if deviations else None,
         "max_abs_deviation": deviations[-1] if deviations else None,
         "tolerance": tolerance,
         "missing_cells": [f"nu={r['nu']:g} f={r['f']:g}" for r in rows if r["celerity"] is None],
+        "category_mismatches": [f"nu={r['nu']:g} f={r['f']:g}" for r in compared if not r["category_match"]],
     }
 
 
@@ -237,7 +280,8 @@ def summary_line(summary: dict[str, Any]) -> str:
     median = summary["median_abs_deviation"]
     return (f"table1: {n}/{summary['cells_total']} cells measured, {summary['within_tolerance']}/{n} "
             f"within {100 * summary['tolerance']:g}%, signs {summary['sign_matches']}/{n}, "
-            f"regimes {summary['regime_matches']}/{n}, median |deviation| "
+            f"regimes {summary['regime_matches']}/{n}, categories {summary['category_matches']}/{n}, "
+            f"reproduced {summary['reproduced']}/{n}, median |deviation| "
             + ("n/a" if median is None else f"{100 * median:.1f}%"))
 
 
@@ -279,7 +323,8 @@ def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
             "missing" if c is None else f"{c:.3f}",
             "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
             r["published_regime"] or "", r["regime"] or "",
-            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else ""),
+            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else "")
+            + (f" (published: {r['published_category']})" if r["category_match"] is False else ""),
             _cell(r["min_T_over_N"], ".3f")]) + " |")
     return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
 

@@ -33,6 +33,21 @@ CATEGORIES = (
     "non_physical", "sampling_too_coarse",
 )
 
+#: How a category reads in tables, figures and reports (the key stays in metrics.json). `no_slip`
+#: means the slip velocity never exceeds the slip threshold: the interface slides uniformly with
+#: the top (e.g. nu = 0.3, f = 0.5), it does not stick; `uniform_slip` slips above the threshold
+#: without ever localizing.
+CATEGORY_LABELS = {
+    "no_slip": "uniform sliding",
+    "uniform_slip": "uniform slip, no front",
+    "intersonic_opening_inversion": "intersonic opening, inversion",
+}
+
+
+def category_label(key: str) -> str:
+    """A category key as text: CATEGORY_LABELS, else the key with spaces for underscores."""
+    return CATEGORY_LABELS.get(key, str(key).replace("_", " "))
+
 
 def regime(celerity: float, c_s: float, c_l: float) -> str | None:
     """'subsonic', 'intersonic' or 'supersonic' from |celerity| (m/s); None if nan."""

@@ -33,12 +33,15 @@ from collections import Counter
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from numbers_tex import MACRO_NAMES, render  # noqa: E402
 from table_io import InputError, read_rows, write_atomically  # noqa: E402
+from table_io import label as table_label  # noqa: E402
 
 SUMMARY_KEYS = {  # macro: (summary.json key, kind); a fraction is printed in percent
     "cellsTotal": ("cells_total", "count"),
     "cellsMissing": ("cells_missing", "count"),
     "cellsCompared": ("cells_compared", "count"),
     "cellsWithin": ("within_tolerance", "count"),
+    "cellsReproduced": ("reproduced", "count"),
+    "categoryMatches": ("category_matches", "count"),
     "tolerancePercent": ("tolerance", "fraction"),
     "signMatches": ("sign_matches", "count"),
     "regimeMatches": ("regime_matches", "count"),
@@ -64,7 +67,7 @@ SWEEP_ROLES = {
 }
 #: Poisson's ratios at which the text follows the backward pulses back to forward ones (the paper's).
 SWITCH_NUS = {"FNuFortyFive": 0.45, "FNuFortyNine": 0.49}
-GRID_COLUMNS = ("nu", "f", "category", "celerity", "regime", "min_T_over_N", "opening", "inversion",
+GRID_COLUMNS = ("nu", "f", "category", "celerity", "celerity_over_cs", "regime", "min_T_over_N", "opening", "inversion",
                 "below_sqrt2_cs", "inside_flutter_wedge", "V0_over_cs", "lambda_over_H", "elements_per_H",
                 "dissipative_friction_opening", "dissipative_friction_before_opening",
                 "friction_energy_share_opening", *SETUP_KEYS.values())
@@ -92,8 +95,16 @@ def num(value, digits=3, decimals=None):
 
 
 def label(value):
-    """A category or regime as text: 'intersonic_opening' -> 'intersonic opening'."""
-    return str(value).replace("_", " ")
+    """A category or regime as text (table_io.LABELS: 'no_slip' -> 'uniform sliding')."""
+    return table_label(value)
+
+
+def cell_list(cells):
+    """Summary cells 'nu=0.45 f=0.9' as '$(\\nu, f) = (0.45, 0.9)$, ...'; 'none' for none."""
+    if not cells:
+        return "none"
+    pairs = [c.replace("nu=", "").replace(" f=", ", ") for c in cells]
+    return r"$(\nu, f) = $ " + ", ".join(f"$({p})$" for p in pairs)
 
 
 # ---------------------------------------------------------------- inputs
@@ -181,10 +192,19 @@ def grid_macros(grid, reference_cell):
     m["nOpening"] = num(sum(r["opening"] is True for r in grid))
     m["nInversion"] = num(sum(r["inversion"] is True for r in grid))
 
-    # c_s < c_p < sqrt(2) c_s among the forward (intersonic) opening waves.
-    forward = [r for r in grid if str(r["category"]).startswith("intersonic_opening")]
+    # c_s < c_p < sqrt(2) c_s among the forward opening waves (intersonic, and the sub- and
+    # supersonic ones the claim excludes).
+    forward = [r for r in grid if str(r["category"]).startswith("intersonic_opening")
+               or str(r["category"]).endswith("_forward_opening")]
     m["nForwardOpening"] = num(len(forward))
     m["nForwardBelowSqrtTwo"] = num(sum(r["below_sqrt2_cs"] is True for r in forward))
+    # Which forward waves are not below sqrt(2) c_s: count per nu and their c_p/c_s.
+    above = [r for r in forward if r["below_sqrt2_cs"] is False]
+    per_nu = Counter(r["nu"] for r in above)
+    ratios = [r["celerity_over_cs"] for r in above if finite(r["celerity_over_cs"])]
+    m["forwardAboveSqrtTwo"] = ("none" if not above else
+                                ", ".join(f"{num(n)} at $\\nu = {nu:g}$" for nu, n in sorted(per_nu.items()))
+                                + f" ($c_p/c_s$ from {num(min(ratios), decimals=3)} to {num(max(ratios), decimals=3)})")
 
     m["celerityReference"] = num(reference["celerity"], decimals=3)
     m["minTNReference"] = num(reference["min_T_over_N"], 2)
@@ -267,6 +287,9 @@ def all_macros(args):
     macros["nRuns"] = num(len(runs))
     errors = [abs(r["energy_balance_error"]) for r in runs if finite(r["energy_balance_error"])]
     macros["maxEnergyError"] = num(max(errors), 2) if errors else None
+    macros["medianEnergyError"] = num(statistics.median(errors), 2) if errors else None
+    macros["categoryMismatchCells"] = cell_list(summary.get("category_mismatches") or [])
+    macros["missingCells"] = cell_list(summary.get("missing_cells") or [])
     macros.update(grid_macros(grid_rows, args.reference_cell))
     for role, parameter, path in args.sweep:
         if role not in SWEEP_ROLES:

@@ -6,11 +6,12 @@
         -o generated/resolution.tex
 
 Each input is LABEL=table1.csv of one sweep (`python3 -m analysis aggregate`: nu, f, celerity,
-published, deviation_rel, within_tol, sign_match, regime_match, category). Rows are the published
-cells that the *last* input ran (the subset run at the finest mesh); a value within the tolerance of
-the published one (within_tol) is set in bold, a wrong sign gets a dagger, a wrong regime a double
-dagger. The closing rows give, over these cells, the subset's score at each resolution
-(`analysis.aggregate.summarize`: values within the tolerance, right signs and regimes, median
+published, deviation_rel, within_tol, sign_match, regime_match, category_match, reproduced, category).
+Rows are the published cells that the *last* input ran (the subset run at the finest mesh); a
+reproduced value (within the tolerance with the published sign, regime and category) is set in bold,
+a wrong sign gets a dagger, a wrong regime a double dagger, another category (e.g. no opening) a
+section sign. The closing rows give, over these cells, the subset's score at each resolution
+(`analysis.aggregate.summarize`: values reproduced, right signs and regimes, median
 |deviation|), so that refinement can be judged on the same cells. The tolerance is the tables' own
 (all inputs must agree).
 """
@@ -27,7 +28,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
 from analysis.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
 
-REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match")
+REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match",
+            "category_match", "reproduced")
 
 
 def finite(value) -> bool:
@@ -42,19 +44,20 @@ def value_cell(row: dict | None) -> str:
     if row is None or not finite(row.get("celerity")):
         return "--"
     text = f"{row['celerity']:.3f}"
-    if row["within_tol"] is True:
+    if row["reproduced"] is True:
         text = rf"\mathbf{{{text}}}"
     marks = ("" if row["sign_match"] is not False else r"\dagger") + \
-            ("" if row["regime_match"] is not False else r"\ddagger")
+            ("" if row["regime_match"] is not False else r"\ddagger") + \
+            ("" if row["category_match"] is not False else r"\S")
     return f"${text}^{{{marks}}}$" if marks else f"${text}$"
 
 
 def score(rows: list[dict | None], tolerance: float) -> tuple[int, int, int, str]:
-    """(within, signs, regimes, median |deviation| in % or '--') of the measured rows."""
+    """(reproduced, signs, regimes, median |deviation| in % or '--') of the measured rows."""
     measured = [r for r in rows if r is not None and finite(r.get("celerity"))]
     summary = summarize(measured, tolerance)
     median = summary["median_abs_deviation"]
-    return (summary["within_tolerance"], summary["sign_matches"], summary["regime_matches"],
+    return (summary["reproduced"], summary["sign_matches"], summary["regime_matches"],
             "--" if median is None else f"{100 * median:.1f}")
 
 
@@ -74,7 +77,7 @@ def render(sets: list[tuple[str, dict]], tolerance: float) -> str:
                                 + [value_cell(rows.get(cell)) for _, rows in sets]) + r" \\")
     scores = [score([rows.get(c) for c in cells], tolerance) for _, rows in sets]
     lines.append(r"\midrule")
-    for title, index in ((rf"within {100 * tolerance:g}\,\%", 0), ("right sign", 1), ("right regime", 2),
+    for title, index in ((rf"reproduced ({100 * tolerance:g}\,\%)", 0), ("right sign", 1), ("right regime", 2),
                          (r"median $|$dev.$|$ (\%)", 3)):
         lines.append(rf"\multicolumn{{3}}{{l}}{{{title} (of {len(cells)})}} & "
                      + " & ".join(str(s[index]) for s in scores) + r" \\")

@@ -5,11 +5,15 @@ published cell of the paper's Table 1 (a bare booktabs `tabular`, no float).
     paper/make_table1.py table1.csv -o paper/generated/table1.tex
 
 table1.csv is `python3 -m analysis aggregate`'s: nu, f, celerity (regenerated, m/s, empty when
-absent), published, deviation_rel, within_tol, sign_match, regime_match, end_reason; `regime` and
-`category` are shown. Only selection and formatting happen here: the deviation (in %) is set in bold
-when within_tol, a regenerated value with the wrong sign is marked with a dagger, one whose regime
-differs from the published one with a double dagger, one from a run that did not complete with an
-asterisk (its end_reason under the table).
+absent), published, deviation_rel, within_tol, sign_match, regime_match, category_match, reproduced,
+celerity_quality, celerity_window_sensitivity, end_reason; `regime` and `category` are shown. Only
+selection and formatting happen here: the regenerated c_p is printed with its uncertainty, the
+change of c_p when the measurement window changes (|celerity_window_sensitivity| |c_p|), and (u)
+when the fronts were unsteady (celerity_quality); the deviation (in %) is set in bold when the cell
+is reproduced (within the tolerance with the published sign, regime and category), a wrong sign is
+marked with a dagger, a wrong regime with a double dagger, another category than the published
+opening wave (e.g. no opening) with a section sign, a run that did not complete with an asterisk
+(its end_reason under the table).
 """
 import argparse
 import math
@@ -17,10 +21,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, read_rows, write_atomically  # noqa: E402
+from table_io import InputError, label, read_rows, write_atomically  # noqa: E402
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match",
-            "regime_match", "regime", "category", "end_reason")
+            "regime_match", "category_match", "reproduced", "celerity_quality",
+            "celerity_window_sensitivity", "regime", "category", "end_reason")
 
 
 def finite(value):
@@ -29,6 +34,20 @@ def finite(value):
 
 def cell(value, fmt):
     return f"${value:{fmt}}$" if finite(value) else "--"
+
+
+def regenerated(r):
+    """c_p with its window uncertainty, (u) when unsteady, * when the run did not complete."""
+    if not finite(r["celerity"]):
+        text = "--"
+    else:
+        text = f"${r['celerity']:.3f}"
+        if finite(r["celerity_window_sensitivity"]):
+            text += f" \\pm {abs(r['celerity_window_sensitivity'] * r['celerity']):.3f}"
+        text += "$"
+        if r["celerity_quality"] == "unsteady":
+            text += "\\textsuperscript{(u)}"
+    return text + ("$^{*}$" if isinstance(r["end_reason"], str) else "")
 
 
 def render(rows):
@@ -50,25 +69,25 @@ def render(rows):
         deviation = "--"
         if finite(r["celerity"]):
             d = 100.0 * r["deviation_rel"]
-            deviation = f"$\\mathbf{{{d:+.1f}}}$" if r["within_tol"] is True else f"${d:+.1f}$"
+            deviation = f"$\\mathbf{{{d:+.1f}}}$" if r["reproduced"] is True else f"${d:+.1f}$"
             if r["sign_match"] is False:
                 deviation += "$^\\dagger$"
             if r["regime_match"] is False:
                 deviation += "$^\\ddagger$"
-        regenerated = cell(r["celerity"], ".3f") + ("$^{*}$" if isinstance(r["end_reason"], str) else "")
-        extra = [str(r[c]).replace("_", " ") if not (isinstance(r[c], float) and math.isnan(r[c]))
+            if r["category_match"] is False:
+                deviation += "$^\\S$"
+        extra = [label(r[c]) if not (isinstance(r[c], float) and math.isnan(r[c]))
                  else "--" for c in optional]
         lines.append(" & ".join([f"{r['nu']:g}", f"{r['f']:g}", cell(r["published"], ".3f"),
-                                 regenerated, deviation] + extra) + " \\\\")
+                                 regenerated(r), deviation] + extra) + " \\\\")
     if not published:
         lines.append(f"\\multicolumn{{{5 + len(optional)}}}{{c}}{{no published cell in the "
                      "input}} \\\\")
-    lines.append("\\bottomrule")
+    lines += ["\\bottomrule", "\\end{tabular}"]
     ended = sorted({r["end_reason"] for r in published if isinstance(r["end_reason"], str)})
-    if ended:
-        lines.append(f"\\multicolumn{{{5 + len(optional)}}}{{l}}{{\\footnotesize $^{{*}}$ run did not "
-                     f"complete: {', '.join(e.replace('_', ' ') for e in ended)}}} \\\\")
-    lines.append("\\end{tabular}")
+    if ended:  # below the tabular, wrapped at the text width
+        lines.append(f"\\par\\smallskip{{\\footnotesize $^{{*}}$ run did not complete: "
+                     f"{', '.join(label(e) for e in ended)}.\\par}}")
     return "\n".join(lines) + "\n"
 
 

@@ -16,7 +16,8 @@ MACRO_NAMES = (
     "medianMuDissBeforeOverF", "nMuDissRuns", "medianFrictionEnergyShareOpening", "maxEnergyError",
     "publishedReference", "nInsideWedge", "nOpeningInsideWedge", "nOutsideWedge",
     "nOpeningOutsideWedge", "switchFNuFortyFive", "switchFNuFortyNine",
-    "publishedSwitchFNuFortyFive", "publishedSwitchFNuFortyNine",
+    "publishedSwitchFNuFortyFive", "publishedSwitchFNuFortyNine", "cellsReproduced", "categoryMatches",
+    "categoryMismatchCells", "missingCells", "forwardAboveSqrtTwo", "medianEnergyError",
 )
 
 

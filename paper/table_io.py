@@ -10,7 +10,33 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
 from analysis.errors import InputError  # noqa: E402,F401
+from analysis.regime import category_label  # noqa: E402
 from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
+
+
+#: How an end reason reads; categories read as analysis.regime.CATEGORY_LABELS says (e.g. `no_slip`
+#: is "uniform sliding": the interface slides with the top, below the slip threshold).
+END_REASON_LABELS = {
+    "stop_after_opening": "after opening",
+    "t_end": "end time",
+    "contact_not_converged": "contact not converged",
+}
+
+
+def label(value) -> str:
+    """A category, regime or end reason as text (underscores become spaces otherwise)."""
+    return END_REASON_LABELS.get(str(value)) or category_label(str(value))
+
+
+def latex_number(text: str) -> str:
+    """A formatted number as LaTeX math text: '3.8e-14' -> '3.8\\times10^{-14}', '1e-05' -> '10^{-5}'."""
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    power = f"10^{{{int(exponent)}}}"
+    if float(mantissa) == 1:
+        return power
+    return ("-" + power) if float(mantissa) == -1 else f"{mantissa}\\times{power}"
 
 
 def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:

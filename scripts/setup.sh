@@ -15,10 +15,10 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
-    --latex) packages+=(latexmk texlive-latex-recommended) ;;
+    --latex) packages+=(latexmk texlive-latex-recommended poppler-utils) ;;  # poppler: pdftoppm renders the paper in tests
     --test) packages+=(
         python3-paraview  # ParaView's VTK: vtkXdmfReader for tests/paraview (python3-vtk9 has no XDMF reader)
-        chromium          # the report in a real browser (tests/browser, marker `browser`)
+        chromium          # the report in a real browser (tests/browser, marker `browser`; tests/figures/test_page_width.py)
       ) ;;
     --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
     --getfem) packages+=(python3-getfem) ;;

@@ -98,7 +98,7 @@ def figure_files(sweep):
     spec = sweep_spec(sweep)
     files = []
     for kind in spec.get("products", []):
-        if kind in ("phase_diagram", "celerity_vs_nu", "tn_curves", "pulse_spacing", "convergence"):
+        if kind in ("phase_diagram", "celerity_vs_nu", "deviation_map", "tn_curves", "tn_aligned", "pulse_spacing", "convergence"):
             files += figure(sweep, kind)
         elif kind == "spacetime":
             for field in spec.get("maps", {}).get("fields", ["state"]):

@@ -36,6 +36,23 @@ rule fig_tn_curves:
         " --out {params.prefix} > {log} 2>&1"
 
 
+rule fig_tn_aligned:
+    """Fig. 2c aligned: T/N from the start of each run's first drop (the `highlight` point in red)."""
+    input:
+        script=figure_script("tn_aligned"),
+        runs=lambda wc: run_files(wc.sweep, "run.h5"),
+        metrics=lambda wc: run_files(wc.sweep, "metrics.json"),
+    output: multiext("results/{sweep}/figures/tn_aligned", *FIGURE_EXTS)
+    params:
+        prefix="results/{sweep}/figures/tn_aligned",
+        labels=lambda wc: tn_labels(wc.sweep),
+        highlight=lambda wc: tn_highlight(wc.sweep),
+    log: "results/{sweep}/logs/fig_tn_aligned.log"
+    shell:
+        "{PYTHON} {input.script} {input.runs} --metrics {input.metrics} --labels {params.labels}"
+        " {params.highlight} --out {params.prefix} > {log} 2>&1"
+
+
 rule fig_snapshots:
     """Fig. 3: material velocity in the deformed layer, slip velocity and opening at the snapshot times."""
     input:
@@ -68,6 +85,17 @@ rule fig_celerity_vs_nu:
     output: multiext("results/{sweep}/figures/celerity_vs_nu", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/celerity_vs_nu"
     log: "results/{sweep}/logs/fig_celerity_vs_nu.log"
+    shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
+
+
+rule fig_deviation_map:
+    """Deviation from the published celerity over (nu, f), reproduced cells and other categories marked."""
+    input:
+        script=figure_script("deviation_map"),
+        table="results/{sweep}/table/table1.csv",
+    output: multiext("results/{sweep}/figures/deviation_map", *FIGURE_EXTS)
+    params: prefix="results/{sweep}/figures/deviation_map"
+    log: "results/{sweep}/logs/fig_deviation_map.log"
     shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
 
 

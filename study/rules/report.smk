@@ -155,9 +155,12 @@ rule paper_table:
 
 rule paper:
     """The LaTeX reproduction report (paper/reproduction.tex): every number, table and figure from
-    generated files. Built in the checkout (paper/ is not copied under --directory)."""
+    generated files. Built in the checkout (paper/ is not copied under --directory). Fails (and
+    leaves no PDF) on content wider than the text, an undefined reference or a placeholder number
+    (paper/check_latex_log.py)."""
     input:
         tex="paper/reproduction.tex",
+        check="paper/check_latex_log.py",
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
         variants="paper/generated/variants.tex",
@@ -165,4 +168,6 @@ rule paper:
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
     output: PAPER_PDF
     log: "logs/paper.log"
-    shell: "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex} > {log} 2>&1"
+    shell:
+        "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex}"
+        " && {PYTHON} {input.check} paper/reproduction.log --numbers {input.numbers}) > {log} 2>&1"

@@ -12,9 +12,14 @@ manifest names (built by study/rules/report.smk):
                    "figures": [PNG, ...], "runs": [{"name": str, "dir": results/<sweep>/<point>}, ...]},
                   ...]}
 
-Figures are embedded as base64 PNG; each caption names the script that drew it. Nothing is
-computed here: deviations, signs and regimes are the aggregate's columns, per-run values the
-metrics.json keys, wall time and memory Snakemake's benchmark of `simulate`.
+Figures are embedded as base64 PNG under a caption that says what they show (CAPTIONS, by the
+figure's kind), for which run, and the script that drew it; wide figures (more than twice as wide as
+high) take the page width, others half of it. The Table 1 block appears only for sweeps that compare
+with the published Table 1 (product `comparison`). Wide tables scroll on a wide screen and wrap in
+print and on a narrow screen (under 60em: the same rules as print).
+Nothing is computed here: deviations, signs, regimes, categories and the celerity's window
+sensitivity are the aggregate's columns or metrics.json keys, wall time and memory Snakemake's
+benchmark of `simulate`; categories read as analysis.regime.CATEGORY_LABELS says.
 """
 
 from __future__ import annotations
@@ -31,9 +36,30 @@ import subprocess
 import sys
 from pathlib import Path
 
-#: metrics.json keys shown per run, when present.
-RUN_KEYS = ("category", "celerity", "regime", "onset_time", "min_T_over_N", "max_opening",
-            "pulse_count", "energy_balance_error", "end_reason", "run_complete")
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from analysis.regime import category_label  # noqa: E402
+
+#: metrics.json keys shown per run, when present, and their column headings.
+RUN_KEYS = {"category": "category", "regime": "regime", "onset_time": "slip onset (s)",
+            "min_T_over_N": "min T/N", "max_opening": "max opening (m)", "pulse_count": "major pulses",
+            "energy_balance_error": "energy residual", "end_reason": "run ended by"}
+#: Text columns of the runs table (left-aligned, may wrap).
+TEXT_KEYS = ("category", "regime", "end_reason")
+
+#: What a figure shows, by the start of its file name (figure_files in study/rules/common.smk).
+CAPTIONS = {
+    "spacetime_slip_velocity": "Slip velocity on the interface in space and time, with the slopes of c_l, c_s and the measured c_p",
+    "spacetime_opening": "Opening of the interface in space and time, with the slopes of c_l, c_s and the measured c_p",
+    "spacetime_state": "Stick, slip and open zones of the interface in space and time",
+    "snapshots": "Material velocity in the deformed layer, slip velocity and opening along the interface at successive times",
+    "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding",
+    "celerity_vs_nu": "Slip-front celerity against nu, regenerated and published, with c_s, sqrt(2) c_s and c_l",
+    "deviation_map": "Deviation of the regenerated celerity from the published one for each published cell (framed: reproduced; crossed: another category than published)",
+    "tn_curves": "Global friction ratio T/N against time",
+    "tn_aligned": "T/N against the time since the start of each run's first frictional drop (x: the run stopped during the drop)",
+    "pulse_spacing": "Number and spacing of the major slip pulses against lambda/H, with the Mach-wave spacing",
+    "convergence": "Celerity, minimum T/N and maximum opening against the swept parameter",
+}
 
 CSS = """
 body { font-family: sans-serif; max-width: 75em; margin: 1em auto; padding: 0 1em; color: #222; }
@@ -41,8 +67,13 @@ table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 0.15em 0.5em; text-align: right; }
 th { background: #f0f0f0; } td.l, th.l { text-align: left; }
 tr.bad td { background: #fde0dc; } tr.far td { background: #fff4cc; }
-figure { display: inline-block; margin: 0.5em; max-width: 48%; vertical-align: top; }
-figure img { max-width: 100%; } figcaption { font-size: 0.8em; color: #555; }
+figure { display: inline-block; margin: 0.5em 0; width: 49%; vertical-align: top; }
+figure.wide { width: 100%; }
+figure img { max-width: 100%; } figcaption { font-size: 0.85em; color: #444; }
+div.scroll { max-width: 100%; overflow-x: auto; }
+@media print, (max-width: 60em) { div.scroll { overflow: visible; } table { font-size: 0.7em; }
+  th, td { white-space: normal; padding: 0.1em 0.25em; } td.l { overflow-wrap: anywhere; }
+  table.runs { table-layout: fixed; width: 100%; } table.runs th, table.runs td { overflow-wrap: anywhere; } }
 pre { background: #f7f7f7; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
 """
 
@@ -84,6 +115,27 @@ def fmt(value, digits: int = 4) -> str:
     return html.escape(str(value))
 
 
+def png_size(path: str) -> tuple[int, int]:
+    """(width, height) in pixels from a PNG's header (IHDR)."""
+    with open(path, "rb") as stream:
+        header = stream.read(24)
+    return int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+
+
+def celerity_text(values: dict) -> str:
+    """c_p (m/s) +- its change with the measurement window, and 'unsteady' when the fronts were."""
+    c = values.get("celerity")
+    c = _number(c) if isinstance(c, str) else c
+    if not isinstance(c, (int, float)) or not math.isfinite(c):
+        return ""
+    sensitivity = values.get("celerity_window_sensitivity")
+    sensitivity = _number(sensitivity) if isinstance(sensitivity, str) else sensitivity
+    text = f"{c:.4g}"
+    if isinstance(sensitivity, (int, float)) and math.isfinite(sensitivity):
+        text += f" &plusmn; {abs(sensitivity * c):.2g}"
+    return text + (" (unsteady)" if values.get("celerity_quality") == "unsteady" else "")
+
+
 def comparison_rows(table_path: str, cells: list[list[float]]) -> list[dict]:
     """Rows of the aggregate's table1.csv (published cells) that this sweep ran."""
     ran = {(round(nu, 6), round(f, 6)) for nu, f in cells}
@@ -95,24 +147,42 @@ def table_html(rows: list[dict], tolerance: float) -> str:
     """Published vs regenerated celerity, from the aggregate's columns (nothing recomputed)."""
     if not rows:
         return "<p>No published cell among this sweep's points.</p>"
+    reproduced = sum(r.get("reproduced") == "true" for r in rows)
     within = sum(r.get("within_tol") == "true" for r in rows)
     measured = sum(bool((r.get("celerity") or "").strip()) for r in rows)
     wrong = sum(r.get("sign_match") == "false" for r in rows)
-    out = [f"<p>{len(rows)} published cells run, {measured} with a measured celerity: {within} within "
-           f"{tolerance:.0%}, {wrong} with the wrong sign.</p>",
-           "<table><tr><th>nu</th><th>f</th><th>published c_p (m/s)</th><th>regenerated c_p (m/s)</th>"
-           "<th>deviation</th><th class=l>regime (published)</th><th class=l>category</th><th>min T/N</th></tr>"]
+    other = sum(r.get("category_match") == "false" for r in rows)
+    out = [f"<p>{len(rows)} published cells run, {measured} with a measured celerity: {reproduced} "
+           f"reproduced (within {tolerance:.0%} with the published sign, regime and outcome), {within} within "
+           f"{tolerance:.0%} whatever their outcome, {wrong} with the wrong sign, {other} with another "
+           "outcome than the published opening wave.</p>",
+           "<div class=scroll><table><tr><th>nu</th><th>f</th><th>published c_p (m/s)</th>"
+           "<th>regenerated c_p (m/s) &plusmn; window</th><th>deviation</th><th class=l>regime (published)</th>"
+           "<th class=l>category (published)</th><th>min T/N</th></tr>"]
     for r in rows:
         deviation = _number(r.get("deviation_rel", ""))
-        css = ("bad" if r.get("sign_match") == "false" or not (r.get("celerity") or "").strip() else
-               "far" if r.get("within_tol") == "false" else "")
+        css = ("bad" if r.get("sign_match") == "false" or r.get("category_match") == "false"
+               or not (r.get("celerity") or "").strip() else
+               "far" if r.get("reproduced") != "true" else "")
         dev = "" if math.isnan(deviation) else f"{100 * deviation:+.1f} %"
+        category = html.escape(category_label(r.get("category") or ""))
+        if r.get("category_match") == "false":
+            category += f" ({html.escape(category_label(r.get('published_category') or ''))})"
         out.append(f"<tr class='{css}'><td>{fmt(r['nu'])}</td><td>{fmt(r['f'])}</td>"
-                   f"<td>{fmt(_number(r['published']))}</td><td>{fmt(_number(r.get('celerity', '')))}</td>"
+                   f"<td>{fmt(_number(r['published']))}</td><td>{celerity_text(r)}</td>"
                    f"<td>{dev}</td><td class=l>{fmt(r.get('regime'))} ({fmt(r.get('published_regime'))})</td>"
-                   f"<td class=l>{fmt(r.get('category'))}</td><td>{fmt(_number(r.get('min_T_over_N', '')), 3)}</td></tr>")
-    out.append("</table>")
+                   f"<td class=l>{category}</td><td>{fmt(_number(r.get('min_T_over_N', '')), 3)}</td></tr>")
+    out.append("</table></div>")
     return "\n".join(out)
+
+
+def figure_caption(stem: str) -> str:
+    """What the figure shows (CAPTIONS) and for which run (the rest of its name)."""
+    kind = next((k for k in sorted(CAPTIONS, key=len, reverse=True) if stem.startswith(k)), None)
+    if kind is None:
+        return stem
+    run = stem[len(kind):].lstrip("_")
+    return CAPTIONS[kind] + (f", run {run}" if run else "") + "."
 
 
 def figure_html(path: str) -> str:
@@ -120,13 +190,17 @@ def figure_html(path: str) -> str:
     stem = Path(path).stem
     script = "figures/" + ("snapshots" if stem.startswith("snapshots_") else
                            "spacetime" if stem.startswith("spacetime_") else stem) + ".py"
-    return (f"<figure><img alt='{html.escape(stem)}' src='data:image/png;base64,{data}'>"
-            f"<figcaption>{html.escape(path)} (drawn by {script})</figcaption></figure>")
+    width, height = png_size(path)
+    css = " class=wide" if width > 2 * height else ""
+    return (f"<figure{css}><img alt='{html.escape(stem)}' src='data:image/png;base64,{data}'>"
+            f"<figcaption>{html.escape(figure_caption(stem))} Drawn by {script} "
+            f"(<code>{html.escape(path)}</code>).</figcaption></figure>")
 
 
 def runs_html(runs: list[dict]) -> str:
-    out = ["<table><tr><th class=l>run</th>" + "".join(f"<th>{k}</th>" for k in RUN_KEYS)
-           + "<th>t_end (s)</th><th>stop after opening (s)</th><th>wall (s)</th><th>max RSS (MB)</th></tr>"]
+    out = ["<div class=scroll><table class=runs><tr><th class=l>run</th><th>c_p (m/s) &plusmn; window</th>"
+           + "".join(f"<th{' class=l' if k in TEXT_KEYS else ''}>{heading}</th>" for k, heading in RUN_KEYS.items())
+           + "<th>end time (s)</th><th>stop after opening (s)</th><th>wall (s)</th><th>memory (MB)</th></tr>"]
     total = 0.0
     for run in runs:
         directory = Path(run["dir"])
@@ -135,11 +209,14 @@ def runs_html(runs: list[dict]) -> str:
         bench = read_benchmark(directory / "logs" / "simulate.benchmark.tsv")
         wall = _number(bench.get("s", ""))
         total += wall if math.isfinite(wall) else 0.0
-        cells = "".join(f"<td>{fmt(metrics.get(k))}</td>" for k in RUN_KEYS)
-        out.append(f"<tr><td class=l>{html.escape(run['name'])}</td>{cells}<td>{fmt(config.get('t_end'), 6)}</td>"
+        values = {**metrics, "category": category_label(metrics["category"]) if "category" in metrics else None}
+        cells = "".join(f"<td{' class=l' if k in TEXT_KEYS else ''}>{fmt(values.get(k))}</td>" for k in RUN_KEYS)
+        out.append(f"<tr><td class=l>{html.escape(run['name'])}</td><td>{celerity_text(metrics)}</td>{cells}<td>{fmt(config.get('t_end'), 6)}</td>"
                    f"<td>{fmt(config.get('stop_after_opening'))}</td><td>{fmt(wall)}</td>"
                    f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
-    out.append("</table>")
+    out.append("</table></div>")
+    out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
+               "the run. Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")
     return "\n".join(out)
 
@@ -171,9 +248,9 @@ def render(manifest: dict) -> str:
         body.append(f"<h2>Sweep <code>{html.escape(section['sweep'])}</code></h2>")
         if section.get("description"):
             body.append(f"<p>{html.escape(section['description'])}</p>")
-        body.append("<h3>Table 1: published vs regenerated</h3>")
-        body.append(table_html(comparison_rows(section["table"], section["cells"]), tolerance))
-        if section.get("comparison"):
+        if section.get("comparison"):  # a sweep that covers the published Table 1
+            body.append("<h3>Table 1: published vs regenerated</h3>")
+            body.append(table_html(comparison_rows(section["table"], section["cells"]), tolerance))
             text = Path(section["comparison"]).read_text()
             body.append(f"<details><summary>analysis compare</summary><pre>{html.escape(text)}</pre></details>")
         if section.get("figures"):

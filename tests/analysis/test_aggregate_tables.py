@@ -56,7 +56,8 @@ def test_derived_columns_are_the_formulas_of_their_docstring():
     m = metrics(0.2, 1.5, 1.2, c_s=0.6, onset_time=700.0, first_drop_start_time=900.0,
                 first_drop_bottom_time=950.5)
     assert agg.derived_columns(m, BOUNDARY) == {"celerity_over_cs": 2.0, "first_drop_start_after_onset": 200.0,
-                                                "first_drop_duration": 50.5, "inside_flutter_wedge": False}
+                                                "first_drop_duration": 50.5, "first_drop_complete": None,
+                                                "inside_flutter_wedge": False}
     empty = agg.derived_columns(metrics(0.2, 1.5, None, c_s=0.6, onset_time=None))
     assert empty == dict.fromkeys(agg.DERIVED_COLUMNS)
 
@@ -83,3 +84,38 @@ def test_the_tables_read_back_as_written(tmp_path):
     assert rows[0]["end_reason"] == "contact_not_converged" and math.isnan(rows[1]["celerity"])
     with pytest.raises(InputError, match="missing required column.s. no_such_column"):
         read_table(tmp_path / "table1.csv", ("no_such_column",))
+
+
+def test_a_cell_whose_run_shows_another_outcome_is_marked_and_never_reproduced():
+    # Both within 5 % with the published sign and regime (intersonic: c_s = 0.645, c_l = 1.054 m/s at
+    # nu = 0.2); the first run never opened.
+    reference = [ReferenceCell(nu=0.2, f=1.5, celerity=0.9), ReferenceCell(nu=0.2, f=1.1, celerity=0.85)]
+    runs = [metrics(0.2, 1.5, 0.91, category="no_opening", opening=False),
+            metrics(0.2, 1.1, 0.86, category="intersonic_opening_inversion")]
+    files, summary = agg.aggregate(runs, runs, reference, 0.05)
+    rows = agg.table1_rows(runs, reference, 0.05)
+    assert [r["published_category"] for r in rows] == ["intersonic_opening", "intersonic_opening"]
+    assert [r["within_tol"] for r in rows] == [True, True]
+    assert [r["category_match"] for r in rows] == [False, True]
+    assert [r["reproduced"] for r in rows] == [False, True]
+    assert summary["within_tolerance"] == 2 and summary["category_matches"] == 1 and summary["reproduced"] == 1
+    assert summary["category_mismatches"] == ["nu=0.2 f=1.5"]
+    assert "no_opening (published: intersonic_opening)" in files["table1.md"]
+
+
+@pytest.mark.parametrize("celerity, category, published", [
+    (-2.6, "supersonic_backward_opening", "supersonic_backward_opening"),
+    (1.2, "supersonic_forward_opening", "supersonic_forward_opening"),  # nu = 0: c_l = 1.0 m/s
+])
+def test_the_published_category_follows_the_sign_and_regime_of_the_published_celerity(celerity, category, published):
+    cell = ReferenceCell(nu=0.0, f=2.0, celerity=celerity)
+    assert agg.published_category(cell) == published
+    assert agg.category_matches(category, published)
+    assert not agg.category_matches("opening_without_front", published)
+
+
+@pytest.mark.parametrize("n_drops, n_complete, complete", [(1, 0, False), (1, 1, True), (3, 2, True),
+                                                            (0, 0, None), (None, None, None)])
+def test_first_drop_complete(n_drops, n_complete, complete):
+    m = metrics(0.2, 1.5, 1.0, n_drops=n_drops, n_complete_drops=n_complete)
+    assert agg.derived_columns(m)["first_drop_complete"] is complete

@@ -121,3 +121,11 @@ def test_undefined_T_over_N_is_bridged_from_its_neighbours():
     bridged = inversion.bridge_undefined(t, ratio)
     assert bridged[2] == pytest.approx(0.0) and np.isfinite(bridged).all()
     assert inversion.minimum_ratio(t, bridged) == (-0.5, 3.0)
+
+
+def test_category_labels_name_every_key_they_rename_and_say_uniform_sliding_for_no_slip():
+    from analysis import regime as regime_module
+
+    assert set(regime_module.CATEGORY_LABELS) <= set(regime_module.CATEGORIES)
+    assert regime_module.category_label("no_slip") == "uniform sliding"
+    assert regime_module.category_label("supersonic_backward_opening") == "supersonic backward opening"

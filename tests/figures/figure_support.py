@@ -15,7 +15,7 @@ GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5", "
 
 
 def report_jobs(data):
-    """The 20 figures reproduction.tex expects, as the pipeline would make them:
+    """The 22 figures reproduction.tex expects, as the pipeline would make them:
     {name: (script, args...)} with paths into the synthetic data folder."""
     jobs = {
         "fig2a_slip_velocity": ("spacetime", data / "run.h5", "--field", "slip_velocity",
@@ -25,11 +25,16 @@ def report_jobs(data):
         "fig2c_tn_shear_rate": ("tn_curves", data / "run_v1e-06.h5", data / "run.h5",
                                 data / "run_v0.0001.h5", "--labels", "1e-6", "1e-5", "1e-4",
                                 "--highlight", 1),
+        "fig2e_tn_aligned": ("tn_aligned", data / "run_v1e-06.h5", data / "run.h5", data / "run_v0.0001.h5",
+                             "--metrics", data / "metrics_v1e-06_drop.json", data / "metrics_drop.json",
+                             data / "metrics_v0.0001_drop.json", "--labels", "1e-6", "1e-5", "1e-4",
+                             "--highlight", 1),
         "fig2d_tn_long": ("tn_curves", data / "run.h5", "--tmax", 1100),
         "fig3_snapshots": ("snapshots", data / "run.h5"),
         "fig4a_phase_diagram": ("phase_diagram", data / "all_metrics.csv", "--flutter",
                                 data / "flutter.txt", "--where", *GRID),
         "fig4b_celerity_vs_nu": ("celerity_vs_nu", data / "table1.csv"),
+        "fig4g_deviation_map": ("deviation_map", data / "table1.csv"),
         "fig4c_state": ("spacetime", data / "run.h5", "--field", "state"),
         "fig4d_state": ("spacetime", data / "run.h5", "--field", "state", "--metrics",
                         data / "metrics.json"),

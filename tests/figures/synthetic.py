@@ -15,6 +15,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from analysis import aggregate, pulses, theory  # noqa: E402
+from analysis.reference import ReferenceCell  # noqa: E402
 
 E, RHO, H = 1000.0, 1000.0, 25.0
 PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
@@ -173,7 +174,9 @@ def metrics_rows():
                  localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
                  first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
                  first_drop_bottom_T_over_N=-0.3 if "inversion" in category else 0.6,
-                 later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1)
+                 later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1,
+                 # the slowest shear rate stops during its second drop; the first one is complete
+                 n_complete_drops=1 if r["V0_over_cs"] == 1e-6 else 2)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
         # What `analysis aggregate` adds to all_metrics.csv.
         r.update(aggregate.derived_columns(r, flutter_boundary()))
@@ -222,13 +225,17 @@ def table1_rows():
         regime = lambda c: "supersonic" if abs(c) > c_l else "intersonic"  # noqa: E731
         row = dict(nu=nu, f=f, celerity=regenerated, published=published, deviation_rel=None,
                    regime=None, published_regime=regime(published), sign_match=None,
-                   regime_match=None, within_tol=None, category=category_of(nu, f), end_reason=None)
+                   regime_match=None, within_tol=None, category=category_of(nu, f), end_reason=None,
+                   published_category=aggregate.published_category(ReferenceCell(nu, f, published)),
+                   category_match=None, reproduced=None, celerity_quality="ok", celerity_window_sensitivity=0.02)
         if regenerated is not None:
             deviation = (regenerated - published) / abs(published)
             row.update(deviation_rel=deviation, regime=regime(regenerated),
                        sign_match=regenerated * published > 0,
                        regime_match=regime(regenerated) == regime(published),
-                       within_tol=abs(deviation) <= 0.05)
+                       within_tol=abs(deviation) <= 0.05,
+                       category_match=aggregate.category_matches(row["category"], row["published_category"]))
+            row["reproduced"] = row["within_tol"] and row["sign_match"] and row["regime_match"] and row["category_match"]
         else:
             row["category"] = None
         if (nu, f) == (0.3, 1.5):  # one regime mismatch, as a real table may have
@@ -264,12 +271,16 @@ def write_all(folder):
     write_sweeps(folder, metrics_rows())
     write_csv(folder / "table1.csv", table1_rows())
     (folder / "flutter.txt").write_text(FLUTTER)
+    for name, start, complete in (("v1e-06", 1000.0, 1), ("", 950.0, 1), ("v0.0001", 900.0, 0)):
+        (folder / f"metrics{'_' + name if name else ''}_drop.json").write_text(json.dumps(
+            {"first_drop_start_time": start, "n_complete_drops": complete}))
     (folder / "metrics.json").write_text(json.dumps(
         {"celerity": 0.85, "celerity_window": [800.0, 1000.0], "regime": "intersonic"}))
     (folder / "summary.json").write_text(json.dumps(  # keys of `analysis aggregate`
         {"cells_total": 38, "cells_compared": 36, "cells_missing": 2, "within_tolerance": 21,
          "sign_matches": 35, "regime_matches": 34, "median_abs_deviation": 0.041,
-         "max_abs_deviation": 0.19, "tolerance": 0.05, "missing_cells": ["nu=0.49 f=2"]}))
+         "max_abs_deviation": 0.19, "tolerance": 0.05, "missing_cells": ["nu=0.49 f=2"],
+         "category_matches": 35, "reproduced": 19, "category_mismatches": ["nu=0.45 f=0.9"]}))
     return folder
 
 

@@ -122,6 +122,7 @@ def drop_column(source, target, column):
 @pytest.mark.parametrize("script,source,column,extra", [
     ("phase_diagram", "all_metrics.csv", "category", ["--flutter", "flutter.txt"]),
     ("celerity_vs_nu", "table1.csv", "published", []),
+    ("deviation_map", "table1.csv", "category_match", []),
     ("pulse_spacing", "all_metrics.csv", "pulse_spacing", []),
     ("convergence", "all_metrics.csv", "max_opening", ["--param", "rho"]),
     ("convergence", "all_metrics.csv", "rho", ["--param", "rho"]),
@@ -183,3 +184,10 @@ def test_metrics_json_is_read(data, tmp_path):
     assert "-2.500 m/s" in captured["title"]
     assert any("$c_p$ = -2.500" in label for label in captured["labels"])
     assert any("$c_l$ = -1.054" in label for label in captured["labels"])
+
+
+def test_tn_aligned_needs_the_first_drop_of_every_run(data, tmp_path):
+    expect_error("tn_aligned", data / "run.h5", "--metrics", data / "metrics.json", "--out", tmp_path / "x",
+                 says="no first_drop_start_time")
+    expect_error("tn_aligned", data / "run.h5", "--metrics", data / "metrics_drop.json", data / "metrics.json",
+                 "--out", tmp_path / "x", says="--metrics has 2 entries for 1 runs")

@@ -38,7 +38,7 @@ def test_every_table_of_the_report_is_declared():
 
 def expected_figures():
     names = re.findall(r"\\generatedfigure\{([\w]+)\}", (PAPER / "reproduction.tex").read_text())
-    assert len(names) == 20
+    assert len(names) == 22
     make = (PAPER / "Makefile").read_text()
     listed = re.search(r"FIGURES = (.*?)\n\n", make, re.S).group(1).replace("\\", " ").split()
     assert sorted(listed) == sorted(names), "Makefile FIGURES and reproduction.tex disagree"
@@ -160,7 +160,7 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
                    "-o", gen / "table1.tex").returncode == 0
     assert command(PAPER / "make_variants.py", f"default={data / 'summary.json'}",
                    f"dt = 1 m / c_s={data / 'summary.json'}", "-o", gen / "variants.tex").returncode == 0
-    assert "dt = 1 m / c\\_s" in (gen / "variants.tex").read_text()
+    assert r"$\Delta t$ = 1 m / $c_s$" in (gen / "variants.tex").read_text()  # symbols typeset
     assert command(PAPER / "make_variants.py", "no-equals-sign", "-o", gen / "bad.tex").returncode == 2
     assert not (gen / "bad.tex").exists()
     for name, table in study_tables().items():  # every table of the study config, from the synthetic study
@@ -194,3 +194,42 @@ def test_table1_flags_a_run_that_did_not_complete(data, tmp_path):
     assert text.count("$^{*}$") == 2 and "run did not complete: contact not converged" in text  # mark, note
     assert command(PAPER / "make_table1.py", data / "table1.csv", "-o", out).returncode == 0
     assert "did not complete" not in out.read_text()
+
+
+OVERFULL_LOG = r"""(./reproduction.tex (./generated/numbers.tex) (./generated/regularized.tex
+Overfull \hbox (157.82016pt too wide) in paragraph at lines 1--19
+ [][]
+) (./generated/variants.tex)
+Overfull \hbox (1.5pt too wide) in paragraph at lines 3--4
+LaTeX Warning: Reference `tab:gone' on page 3 undefined on input line 12.
+"""
+
+
+def test_the_log_check_fails_on_a_box_off_the_page_an_undefined_reference_and_a_placeholder(tmp_path):
+    log = tmp_path / "reproduction.log"
+    log.write_text(OVERFULL_LOG)
+    numbers = tmp_path / "numbers.tex"
+    numbers.write_text("\\newcommand{\\cellsTotal}{\\ensuremath{38}}\n\\newcommand{\\nRuns}{\\notavailable}\n")
+    result = command(PAPER / "check_latex_log.py", log, "--numbers", numbers)
+    assert result.returncode == 1
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 3, result.stderr  # the 1.5 pt box is within the allowance
+    assert "157.8 pt" in lines[0] and "generated/regularized.tex" in lines[0]
+    assert "tab:gone" in lines[1] and "\\nRuns" in lines[2]
+    log.write_text("(./reproduction.tex)\nOverfull \\hbox (2.9pt too wide) in paragraph at lines 3--4\n")
+    assert command(PAPER / "check_latex_log.py", log, "--numbers", numbers).returncode == 1  # placeholder
+    assert command(PAPER / "check_latex_log.py", log).returncode == 0
+
+
+@needs_latex
+def test_the_build_fails_on_a_table_wider_than_the_page(tmp_path):
+    paper = tmp_path / "paper"
+    shutil.copytree(PAPER, paper, ignore=shutil.ignore_patterns("generated", "*.pdf", "*.aux"))
+    subprocess.run([sys.executable, str(paper / "make_placeholders.py"), "--dir", str(paper / "generated")],
+                   check=True, capture_output=True)
+    wide = "\\begin{tabular}{" + "l" * 12 + "}\n" + " & ".join(["a rather wide column"] * 12) + " \\\\\n\\end{tabular}\n"
+    (paper / "generated" / "long.tex").write_text(wide)
+    result = subprocess.run(["make", "-C", str(paper)], capture_output=True, text=True)
+    assert result.returncode != 0
+    assert "overfull box" in result.stderr and "generated/long.tex" in result.stderr
+    assert not (paper / "reproduction.pdf").exists()

@@ -70,7 +70,7 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     result, counts = dry(REPO, "all", "--forceall")
     assert simulations_per_sweep(result.stdout) == SIMULATIONS
     assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
-    assert counts["paper_figure"] == 20 and counts["paper"] == 1 and counts["report"] == 1
+    assert counts["paper_figure"] == 22 and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == 8
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
