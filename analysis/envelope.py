@@ -32,10 +32,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import statistics
 import sys
 from pathlib import Path
 from typing import Any
 
+from analysis.ensemble import SYSTEMATIC_GROUPS
 from analysis.errors import InputError
 from analysis.reference import cell_key
 from analysis.table_csv import read_table
@@ -90,8 +92,8 @@ def factors_of(variants: list[dict[str, Any]]) -> list[str]:
 
 def envelope_rows(ensemble: list[dict[str, Any]], variants: list[dict[str, Any]],
                   tolerance: float) -> list[dict[str, Any]]:
-    """One row per published cell of `ensemble`. Each variant: factor, label, values and
-    base_values ({(nu, f): celerity})."""
+    """One row per published cell of `ensemble`, by systematic group (ensemble.SYSTEMATIC_GROUPS),
+    then f, then nu. Each variant: factor, label, values and base_values ({(nu, f): celerity})."""
     factors = factors_of(variants)
     out = []
     for cell in ensemble:
@@ -149,16 +151,24 @@ def envelope_rows(ensemble: list[dict[str, Any]], variants: list[dict[str, Any]]
             nearer = min((row["envelope_min"], row["envelope_max"]), key=lambda b: abs(b - published))
             row["status"], row["outside_by_rel"] = "outside", abs(nearer - published) / scale
         out.append(row)
-    return out
+    order = {name: i for i, (name, _) in enumerate(SYSTEMATIC_GROUPS)}
+    return sorted(out, key=lambda r: (order.get(r["group"], len(order)), r["f"], r["nu"]))
 
 
 def summarize(rows: list[dict[str, Any]], factors: list[str]) -> dict[str, Any]:
-    """Counts per status, per systematic group, and how often each factor moves a cell most."""
-    groups: dict[str, dict[str, int]] = {}
-    for row in rows:
-        counts = groups.setdefault(row["group"] or "", {s: 0 for s in STATUSES})
-        if row["status"]:
-            counts[row["status"]] += 1
+    """Counts per status, and how often each factor moves a cell most, overall and per systematic
+    group; per group also the median |shift| of each factor over the cells where it was run."""
+    groups: dict[str, dict[str, Any]] = {}
+    for name in dict.fromkeys(r["group"] or "" for r in rows):
+        members = [r for r in rows if (r["group"] or "") == name]
+        groups[name] = {
+            **{s: sum(r["status"] == s for r in members) for s in STATUSES},
+            "top_factor_counts": {f: sum(r["top_factor"] == f for r in members) for f in factors},
+            "median_abs_shift": {f: (statistics.median(shifts) if shifts else None)
+                                 for f in factors
+                                 for shifts in [[abs(r[f"shift_{f}"]) for r in members
+                                                 if r[f"shift_{f}"] is not None]]},
+        }
     return {
         "cells": len(rows),
         **{s: sum(r["status"] == s for r in rows) for s in STATUSES},
