@@ -58,9 +58,11 @@ def ensemble_macros(summary, path):
         "ensFullAgreement": get(summary, "cells_full_agreement", path),
         "ensSpreadMedian": pct(get(summary, "spread_rel_median", path), signed=False),
     }
-    for name, group in get(summary, "groups", path).items():
-        if name not in GROUP_STEMS:
-            raise InputError(f"{path}: unknown group '{name}' (known: {', '.join(GROUP_STEMS)})")
+    groups = get(summary, "groups", path)
+    unknown = [name for name in groups if name not in GROUP_STEMS]
+    if unknown:
+        raise InputError(f"{path}: unknown group '{unknown[0]}' (known: {', '.join(GROUP_STEMS)})")
+    for name, group in groups.items():
         stem = "ens" + GROUP_STEMS[name]
         macros.update({
             f"{stem}Cells": group["cells"],
@@ -79,20 +81,26 @@ def envelope_macros(summary, path):
     macros = {f"env{status.capitalize()}": get(summary, status, path)
               for status in ("within", "inside", "outside", "unmeasured")}
     macros["envCells"] = get(summary, "cells", path)
-    for factor, count in get(summary, "top_factor_counts", path).items():
-        if factor not in FACTOR_STEMS:
-            raise InputError(f"{path}: unknown factor '{factor}' (known: {', '.join(FACTOR_STEMS)})")
-        macros[f"envTop{FACTOR_STEMS[factor]}"] = count
-    for name, counts in get(summary, "groups", path).items():
-        if name not in GROUP_STEMS:
-            raise InputError(f"{path}: unknown group '{name}'")
-        stem = "env" + GROUP_STEMS[name]
+    top = get(summary, "top_factor_counts", path)
+    groups = get(summary, "groups", path)
+    for name in list(top) + [f for g in groups.values() for f in get(g, "median_abs_shift", path)]:
+        if name not in FACTOR_STEMS:
+            raise InputError(f"{path}: unknown factor '{name}' (known: {', '.join(FACTOR_STEMS)})")
+    unknown = [name for name in groups if name not in GROUP_STEMS]
+    if unknown:
+        raise InputError(f"{path}: unknown group '{unknown[0]}' (known: {', '.join(GROUP_STEMS)})")
+    # Every factor and group gets its macros (0 or "--" when the study has none), so that
+    # how_sure.tex builds whatever variants config `paper.envelope` lists.
+    for factor, stem in FACTOR_STEMS.items():
+        macros[f"envTop{stem}"] = top.get(factor, 0)
+    for name, group_stem in GROUP_STEMS.items():
+        counts = groups.get(name, {})
+        stem = "env" + group_stem
         for status in ("within", "inside", "outside"):
-            macros[f"{stem}{status.capitalize()}"] = get(counts, status, path)
-        for factor, count in get(counts, "top_factor_counts", path).items():
-            macros[f"{stem}Top{FACTOR_STEMS[factor]}"] = count
-        for factor, shift in get(counts, "median_abs_shift", path).items():
-            macros[f"{stem}Shift{FACTOR_STEMS[factor]}"] = pct(shift, signed=False)
+            macros[f"{stem}{status.capitalize()}"] = counts.get(status, 0)
+        for factor, factor_stem in FACTOR_STEMS.items():
+            macros[f"{stem}Top{factor_stem}"] = counts.get("top_factor_counts", {}).get(factor, 0)
+            macros[f"{stem}Shift{factor_stem}"] = pct(counts.get("median_abs_shift", {}).get(factor), signed=False)
     return macros
 
 
