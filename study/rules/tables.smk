@@ -219,12 +219,14 @@ rule fig_envelope:
 
 
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
-                  "paper/generated/envelope.tex", "paper/generated/envelope.pdf"]
+                  "paper/generated/envelope.tex", "paper/generated/envelope.pdf",
+                  "paper/generated/phase_diagram_ensemble.pdf"]
 
 
 rule paper_how_sure:
     """The generated inputs of paper/how_sure.tex: its numbers (paper/make_how_sure.py), the
-    ensemble and envelope tables and the envelope figure."""
+    ensemble and envelope tables, the envelope figure and the ensemble's phase diagram. Through
+    the paper, `all` runs the ensemble sweep and the variant sweeps."""
     input:
         script="paper/make_how_sure.py",
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
@@ -232,6 +234,7 @@ rule paper_how_sure:
         envelope="results/envelope/envelope_summary.json",
         envelope_table="results/envelope/envelope.tex",
         figure="results/envelope/envelope.pdf",
+        phase_diagram=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/figures/phase_diagram_ensemble.pdf",
     output: HOW_SURE_FILES
     log: "logs/paper_how_sure.log"
     shell:
@@ -239,4 +242,5 @@ rule paper_how_sure:
         " -o paper/generated/how_sure_numbers.tex"
         " && cp {input.ensemble_table} paper/generated/ensemble.tex"
         " && cp {input.envelope_table} paper/generated/envelope.tex"
-        " && cp {input.figure} paper/generated/envelope.pdf) > {log} 2>&1"
+        " && cp {input.figure} paper/generated/envelope.pdf"
+        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf) > {log} 2>&1"

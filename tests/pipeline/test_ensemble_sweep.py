@@ -17,7 +17,8 @@ def test_ensemble_sweep_is_every_published_cell_times_eight_seeds(study_config):
     assert len(points) == 38 * 8
     assert sorted({p["seed"] for p in points.values()}) == list(range(1, 9))
     assert {p["elements_per_H"] for p in points.values()} == {64}
-    assert "table1_ensemble" in study_config["study"]
+    # `all` builds it through the paper's envelope (test_wiring), not as a sweep of `study`
+    assert study_config["paper"]["envelope"]["ensemble"] == "table1_ensemble"
 
 
 def test_seed_one_is_the_ci_run_and_other_seeds_spell_their_seed(study_config):
