@@ -1,55 +1,18 @@
 """The section "How sure is this table": the envelope figure, the phase diagram of an ensemble and
 paper/make_how_sure.py, from tables that analysis.ensemble and analysis.envelope write for a small
 made-up ensemble (three cells, three seeds, two method variants)."""
-import csv
 import json
 import re
-import sys
 
 import pytest
 
 from figure_support import PAPER, ROOT, assert_figure, call, command
-
-sys.path.insert(0, str(ROOT))
-from analysis import ensemble as ensemble_module  # noqa: E402
-from analysis import envelope as envelope_module  # noqa: E402
-
-REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
-SEEDS = {(0.2, 1.5): [0.86, 0.85, 0.87], (0.45, 1.0): [-2.68, -2.66, 1.0], (0.0, 1.1): [0.99, 1.01, 0.97]}
-CATEGORY = {(0.2, 1.5): "intersonic_opening_inversion", (0.45, 1.0): "supersonic_backward_opening",
-            (0.0, 1.1): "supersonic_forward_opening"}
-
-
-def write_csv(path, rows):
-    with open(path, "w", newline="") as stream:
-        writer = csv.DictWriter(stream, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    return path
+from how_sure_inputs import write_csv, write_tables
 
 
 @pytest.fixture(scope="module")
 def tables(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("how_sure")
-    (folder / "ref.csv").write_text(REFERENCE)
-    runs = [{"nu": nu, "f": f, "seed": seed, "celerity": c, "celerity_reason": "ok",
-             "category": CATEGORY[(nu, f)] if c * SEEDS[(nu, f)][0] > 0 else "supersonic_forward_opening",
-             "elements_per_H": 64}
-            for (nu, f), values in SEEDS.items() for seed, c in enumerate(values, start=1)]
-    write_csv(folder / "all_metrics.csv", runs)
-    assert ensemble_module.main([str(folder / "all_metrics.csv"), "--reference", str(folder / "ref.csv"),
-                                 "-o", str(folder)]) == 0
-    coarse = [{"nu": nu, "f": f, "celerity": values[0] * 1.08, "celerity_reason": "ok"}
-              for (nu, f), values in SEEDS.items()]
-    write_csv(folder / "h32.csv", coarse)
-    base = [{"nu": nu, "f": f, "celerity": values[0], "celerity_reason": "ok"} for (nu, f), values in SEEDS.items()]
-    write_csv(folder / "h64.csv", base)
-    spec = {"variants": [{"factor": "mesh", "label": "H/32", "table": str(folder / "h32.csv"),
-                          "base": str(folder / "h64.csv")}]}
-    assert envelope_module.main(["--ensemble", str(folder / "ensemble.csv"), "--spec", json.dumps(spec),
-                                 "-o", str(folder)]) == 0
-    (folder / "flutter.txt").write_text("0 nan nan\n0.2 1.0 inf\n0.45 1.0 inf\n")
-    return folder
+    return write_tables(tmp_path_factory.mktemp("how_sure"))
 
 
 def test_envelope_figure(tables, tmp_path):
