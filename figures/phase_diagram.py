@@ -3,13 +3,17 @@
 
     figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --out fig4a
     figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --where elements_per_H=64 --out fig4a
+    figures/phase_diagram.py ensemble.csv --ensemble --flutter flutter.txt --out fig4a_ensemble
 
 One marker per run from the `category` column: open circle no opening, square intersonic opening
 in the sliding direction, double square the same with inversion of T/N, diamond supersonic opening
 against the sliding direction; any other category gets its own marker, named in the legend. The
 dash-dotted lines bound the flutter wedge read from `flutter.txt` (lines `nu f_lower f_upper`, as
 printed by `python3 -m analysis flutter-boundary`; `inf` = unbounded, `nan` = no instability).
-Each (nu, f) must appear once: restrict a mixed table with --where column=value.
+Each (nu, f) must appear once: restrict a mixed table with --where column=value. With --ensemble
+the input is `python3 -m analysis.ensemble`'s ensemble.csv: the marker is the cell's majority
+category over its seeds, and a cell whose seeds disagree is ringed in orange with its category
+agreement (fraction of the seeds in the majority category) written beside it.
 """
 import argparse
 from collections import Counter
@@ -22,6 +26,8 @@ import _style
 from _data import InputError, read_csv, read_flutter, select
 
 REQUIRED = ("nu", "f", "category")
+ENSEMBLE_REQUIRED = ("nu", "f", "majority_category", "category_agreement", "n_runs")
+RING = dict(marker="o", mfc="none", mec="tab:orange", ms=13, mew=1.4)
 KNOWN = {
     "no_opening": ("no opening", [dict(marker="o", mfc="white", mec="0.3", ms=7, mew=1.0)]),
     "intersonic_opening": ("intersonic opening wave, sliding direction",
@@ -52,6 +58,8 @@ def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("metrics", help="all_metrics.csv (one row per run)")
     parser.add_argument("--flutter", required=True, help="flutter.txt: lines 'nu f_lower f_upper'")
+    parser.add_argument("--ensemble", action="store_true",
+                        help="the input is ensemble.csv: majority category and category agreement")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
@@ -61,7 +69,11 @@ def parse_args(argv):
 def main(argv=None):
     # 1. Parse options, read the runs and the flutter boundary.
     args = parse_args(argv)
-    rows = select(read_csv(args.metrics, REQUIRED), args.where, args.metrics)
+    if args.ensemble:
+        rows = select(read_csv(args.metrics, ENSEMBLE_REQUIRED), args.where, args.metrics)
+        rows = [{**r, "category": r["majority_category"]} for r in rows]
+    else:
+        rows = select(read_csv(args.metrics, REQUIRED), args.where, args.metrics)
     repeated = [k for k, n in Counter((r["nu"], r["f"]) for r in rows).items() if n > 1]
     if repeated:
         raise InputError(f"{args.metrics}: {len(repeated)} (nu, f) point(s) appear more than once "
@@ -95,6 +107,15 @@ def main(argv=None):
             ax.plot(nu, f, ls="none", zorder=3, **layer)
         handles.append(tuple(Line2D([], [], ls="none", **layer) for layer in layers))
         labels.append(f"{label} ({counts[category]})")
+    # 3b. Ensembles: ring and agreement where the seeds disagree.
+    split = [r for r in rows if args.ensemble and r["category_agreement"] < 1.0]
+    for r in split:
+        ax.plot([r["nu"]], [r["f"]], ls="none", zorder=4, **RING)
+        ax.annotate(f"{r['category_agreement']:.2f}", (r["nu"], r["f"]), xytext=(7, 5),
+                    textcoords="offset points", fontsize=7, color="tab:orange", zorder=5)
+    if args.ensemble:
+        handles.append(Line2D([], [], ls="none", **RING))
+        labels.append(f"seeds disagree ({len(split)} cells): fraction\nin the majority category")
     handles.append(Line2D([], [], color="k", ls="-.", lw=1.2))
     labels.append("flutter of steady sliding (theory):\nunstable inside the shaded wedge")
     ax.legend(handles, labels, handler_map={tuple: HandlerTuple(ndivide=1)}, loc="upper left",
@@ -111,7 +132,9 @@ def main(argv=None):
     ax.set_xlabel("Poisson's ratio $\\nu$ (-)")
     ax.set_ylabel("Coulomb friction coefficient $f$ (-)")
     shared = _style.common_label(rows, skip=("nu", "f"))
-    ax.set_title(f"Sliding regimes of {len(rows)} runs in the ($\\nu$, $f$) plane"
+    what = (f"{len(rows)} cells (majority of {int(max(r['n_runs'] for r in rows))} seeds)"
+            if args.ensemble else f"{len(rows)} runs")
+    ax.set_title(f"Sliding regimes of {what} in the ($\\nu$, $f$) plane"
                  + (f"\n{shared}" if shared else ""))
     _style.save(fig, args.out)
     return 0

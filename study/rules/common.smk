@@ -123,6 +123,8 @@ def sweep_products(sweep, with_report=True):
     files = table_files(sweep) + figure_files(sweep)
     if "comparison" in products:
         files.append(f"results/{sweep}/table/comparison.txt")
+    if "ensemble" in products:
+        files += ensemble_files(sweep)  # study/rules/tables.smk
     if with_report and "report" in products:
         files.append(f"results/{sweep}/report.html")
     return files

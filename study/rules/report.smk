@@ -166,6 +166,7 @@ rule paper:
         variants="paper/generated/variants.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
+        how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:

@@ -41,7 +41,8 @@ def test_quick_is_the_default_target(workdir):
 SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1,
                "table1_h32": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
                "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 14,
-               "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3}
+               "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3,
+               "table1_ensemble": 38 * 8}
 
 
 def jobs(output):
@@ -72,6 +73,9 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
     assert counts["paper_figure"] == 22 and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == 8
+    # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
+    assert counts["ensemble_table"] == 1 and counts["fig_phase_diagram_ensemble"] == 1
+    assert counts["envelope"] == 1 and counts["fig_envelope"] == 1 and counts["paper_how_sure"] == 1
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
 
