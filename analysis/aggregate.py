@@ -26,8 +26,6 @@ Outputs (all written together or not at all):
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 import math
 from pathlib import Path
@@ -35,7 +33,8 @@ from typing import Any, Iterable
 
 from analysis import theory
 from analysis.errors import InputError
-from analysis.reference import ReferenceCell, cell_key
+from analysis.reference import ReferenceCell, metrics_by_cell
+from analysis.table_csv import csv_text, format_cell
 
 TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
@@ -217,14 +216,7 @@ def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
 
     InputError when two metrics files fall on the same published cell (select one with --select).
     """
-    by_cell: dict[tuple[float, float], dict[str, Any]] = {}
-    for m in metrics:
-        key = cell_key(m["nu"], m["f"])
-        if key in by_cell:
-            raise InputError(f"two metrics for the cell nu={key[0]:g} f={key[1]:g}: "
-                             f"{by_cell[key].get('metrics_file')} and {m.get('metrics_file')}; "
-                             "pass one per cell or narrow them with --select key=value")
-        by_cell[key] = m
+    by_cell = metrics_by_cell(metrics)
     rows = []
     for cell in reference:
         m = by_cell.get(cell.key)
@@ -289,27 +281,8 @@ def summary_line(summary: dict[str, Any]) -> str:
 # Formatting
 
 
-def _cell(value: Any, fmt: str = ".6g") -> str:
-    if value is None:
-        return ""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return "" if not math.isfinite(value) else format(value, fmt)
-    return str(value)
-
-
-def _csv(columns: list[str] | tuple[str, ...], rows: list[dict[str, Any]], fmt: str = ".6g") -> str:
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(columns)
-    for row in rows:
-        writer.writerow([_cell(row.get(c), fmt) for c in columns])
-    return out.getvalue()
-
-
-def table1_csv(rows: list[dict[str, Any]]) -> str:
-    return _csv(TABLE1_COLUMNS, rows)
+def table1csv_text(rows: list[dict[str, Any]]) -> str:
+    return csv_text(TABLE1_COLUMNS, rows)
 
 
 def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
@@ -325,7 +298,7 @@ def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
             r["published_regime"] or "", r["regime"] or "",
             (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else "")
             + (f" (published: {r['published_category']})" if r["category_match"] is False else ""),
-            _cell(r["min_T_over_N"], ".3f")]) + " |")
+            format_cell(r["min_T_over_N"], ".3f")]) + " |")
     return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
 
 
@@ -380,14 +353,14 @@ def table1_latex(rows: list[dict[str, Any]]) -> str:
     return "\n".join(out) + "\n"
 
 
-def all_metrics_csv(metrics: list[dict[str, Any]]) -> str:
+def all_metricscsv_text(metrics: list[dict[str, Any]]) -> str:
     """One row per metrics dict, every scalar key (first-seen order, metrics_file first)."""
     columns = ["metrics_file"]
     for m in metrics:
         for key, value in m.items():
             if key not in columns and (value is None or isinstance(value, (bool, int, float, str))):
                 columns.append(key)
-    return _csv(columns, metrics, fmt=".10g")
+    return csv_text(columns, metrics, fmt=".10g")
 
 
 def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
@@ -413,10 +386,10 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
     rows = table1_rows(table_metrics, reference, tolerance)
     summary = summarize(rows, tolerance)
     files = {
-        "table1.csv": table1_csv(rows),
+        "table1.csv": table1csv_text(rows),
         "table1.md": table1_markdown(rows, summary),
         "table1.tex": table1_latex(rows),
         "summary.json": json.dumps(summary, indent=2) + "\n",
-        "all_metrics.csv": all_metrics_csv([{**m, **derived_columns(m, flutter)} for m in metrics]),
+        "all_metrics.csv": all_metricscsv_text([{**m, **derived_columns(m, flutter)} for m in metrics]),
     }
     return files, summary

@@ -130,9 +130,7 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from analysis.aggregate import DEFAULT_TOLERANCE
     from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
-    from analysis.reference import DEFAULT_REFERENCE
 
     parser = argparse.ArgumentParser(prog="python3 -m analysis",
                                      description="Measure slidewave runs and compare with the paper.")
@@ -155,10 +153,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = commands.add_parser("aggregate", help="metrics files -> Table 1 (CSV, Markdown, LaTeX), summary")
     p.add_argument("metrics", type=Path, nargs="+", help="metrics JSON files")
     p.add_argument("-o", "--output", type=Path, required=True, help="output folder")
-    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
-                   help="published celerities (default %(default)s)")
-    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
-                   help="relative tolerance of within_tol (default %(default)g)")
+    _reference_options(p)
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value enter Table 1 (repeatable), e.g. elements_per_H=32")
     p.add_argument("--flutter", type=Path, help="flutter boundary (flutter-boundary output): adds the "
@@ -167,10 +162,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = commands.add_parser("compare", help="check a table1.csv against the published celerities")
     p.add_argument("table", type=Path, help="table with columns nu, f, celerity")
-    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
-                   help="published celerities (default %(default)s)")
-    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
-                   help="relative tolerance (default %(default)g)")
+    _reference_options(p)
     p.add_argument("--min-within", type=int, default=0,
                    help="fail when fewer cells are within tolerance (default %(default)s)")
     p.add_argument("--ratchet", action="store_true",
@@ -184,10 +176,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = commands.add_parser("score-rules",
                             help="Table 1 scored under every celerity rule (docs/measurement-rule.md)")
     p.add_argument("metrics", type=Path, nargs="+", help="metrics JSON files, one per published cell")
-    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
-                   help="published celerities (default %(default)s)")
-    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
-                   help="relative tolerance (default %(default)g)")
+    _reference_options(p)
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value are scored (repeatable), e.g. elements_per_H=64")
     p.add_argument("--out", type=Path, help="also write the scores as CSV (one row per rule)")
@@ -199,6 +188,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=_flutter_boundary)
     return parser
 
+
+
+def _reference_options(p: argparse.ArgumentParser) -> None:
+    """--reference and --tolerance, the same for every command that scores against Table 1."""
+    from analysis.aggregate import DEFAULT_TOLERANCE
+    from analysis.reference import DEFAULT_REFERENCE
+
+    p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
+                   help="published celerities (default %(default)s)")
+    p.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
+                   help="relative tolerance of a cell's deviation (default %(default)g)")
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)

@@ -231,12 +231,12 @@ def ensemble_latex(rows: list[dict[str, Any]]) -> str:
 def ensemble_files(rows: list[dict[str, Any]], reference: list[ReferenceCell],
                    tolerance: float) -> dict[str, str]:
     """Every output text by file name."""
-    from analysis.aggregate import _csv
+    from analysis.table_csv import csv_text
 
     table = ensemble_rows(rows, reference, tolerance)
     summary = summarize(table, tolerance)
     return {
-        "ensemble.csv": _csv(ENSEMBLE_COLUMNS, table),
+        "ensemble.csv": csv_text(ENSEMBLE_COLUMNS, table),
         "ensemble.md": ensemble_markdown(table, summary),
         "ensemble.tex": ensemble_latex(table),
         "ensemble_summary.json": json.dumps(summary, indent=2) + "\n",

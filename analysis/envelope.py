@@ -246,7 +246,7 @@ def load_variants(spec: dict[str, Any]) -> list[dict[str, Any]]:
 
 
 def envelope_files(ensemble: list[dict[str, Any]], spec: dict[str, Any], tolerance: float) -> dict[str, str]:
-    from analysis.aggregate import _csv
+    from analysis.table_csv import csv_text
 
     variants = load_variants(spec)
     factors = factors_of(variants)
@@ -254,7 +254,7 @@ def envelope_files(ensemble: list[dict[str, Any]], spec: dict[str, Any], toleran
     summary = {**summarize(rows, factors), "tolerance": tolerance,
                "variants": [{k: v[k] for k in ("factor", "label", "table", "base")} for v in variants]}
     return {
-        "envelope.csv": _csv(BASE_COLUMNS + tuple(f"shift_{f}" for f in factors), rows),
+        "envelope.csv": csv_text(BASE_COLUMNS + tuple(f"shift_{f}" for f in factors), rows),
         "envelope.md": envelope_markdown(rows, factors, summary),
         "envelope.tex": envelope_latex(rows),
         "envelope_summary.json": json.dumps(summary, indent=2) + "\n",

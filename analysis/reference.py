@@ -11,6 +11,7 @@ import csv
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from analysis import theory
 from analysis.errors import InputError
@@ -42,6 +43,19 @@ class ReferenceCell:
 def cell_key(nu: float, f: float) -> tuple[float, float]:
     """Key of a (nu, f) cell, robust to float formatting (rounded to 1e-6)."""
     return round(float(nu), 6), round(float(f), 6)
+
+
+def metrics_by_cell(metrics: list[dict[str, Any]]) -> dict[tuple[float, float], dict[str, Any]]:
+    """Metrics keyed by their (nu, f) cell; InputError when two files fall on one cell."""
+    by_cell: dict[tuple[float, float], dict[str, Any]] = {}
+    for m in metrics:
+        key = cell_key(m["nu"], m["f"])
+        if key in by_cell:
+            raise InputError(f"two metrics for the cell nu={key[0]:g} f={key[1]:g}: "
+                             f"{by_cell[key].get('metrics_file')} and {m.get('metrics_file')}; "
+                             "pass one per cell or narrow them with --select key=value")
+        by_cell[key] = m
+    return by_cell
 
 
 def read_reference(path: str | Path = DEFAULT_REFERENCE) -> list[ReferenceCell]:

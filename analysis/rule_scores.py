@@ -17,7 +17,7 @@ from typing import Any
 
 from analysis.celerity_rules import RULES
 from analysis.errors import InputError
-from analysis.reference import ReferenceCell, cell_key
+from analysis.reference import ReferenceCell, metrics_by_cell
 from analysis.regime import regime
 
 #: Columns of the score table (one row per rule).
@@ -40,20 +40,13 @@ def exclusion(metrics: dict[str, Any]) -> str | None:
 
 def _by_cell(metrics: list[dict[str, Any]]) -> dict[tuple[float, float], dict[str, Any]]:
     """Metrics keyed by (nu, f); InputError for two files on one cell or a file without the rules."""
-    by_cell: dict[tuple[float, float], dict[str, Any]] = {}
     for m in metrics:
         missing = [f"celerity_rule_{name}" for name in RULES if f"celerity_rule_{name}" not in m]
         if missing or "celerity_rule_default" not in m:
             raise InputError(f"{m.get('metrics_file')}: metrics lack the measurement rules "
                              f"({', '.join(missing) or 'celerity_rule_default'}); measure the run "
                              "again with this analysis (python3 -m analysis measure)")
-        key = cell_key(m["nu"], m["f"])
-        if key in by_cell:
-            raise InputError(f"two metrics for the cell nu={key[0]:g} f={key[1]:g}: "
-                             f"{by_cell[key].get('metrics_file')} and {m.get('metrics_file')}; "
-                             "pass one per cell or narrow them with --select key=value")
-        by_cell[key] = m
-    return by_cell
+    return metrics_by_cell(metrics)
 
 
 def cell_scores(metrics: list[dict[str, Any]], reference: list[ReferenceCell],

@@ -1,14 +1,37 @@
-"""Reading the CSV tables that `analysis.aggregate` writes (table1.csv, all_metrics.csv), for the
-figures and the paper: one parser of a cell, one reader that checks the columns a caller needs."""
+"""The CSV tables of the analysis (table1.csv, all_metrics.csv, ensemble.csv, ...): one writer that
+`analysis.aggregate`, `ensemble` and `envelope` use, and for the figures and the paper one parser of
+a cell and one reader that checks the columns a caller needs."""
 
 from __future__ import annotations
 
 import csv
+import io
 import math
 from pathlib import Path
 from typing import Any
 
 from analysis.errors import InputError
+
+
+def format_cell(value: Any, fmt: str = ".6g") -> str:
+    """A value as a cell: None and non-finite floats -> '', bools -> true/false, floats by fmt."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return "" if not math.isfinite(value) else format(value, fmt)
+    return str(value)
+
+
+def csv_text(columns: list[str] | tuple[str, ...], rows: list[dict[str, Any]], fmt: str = ".6g") -> str:
+    """The rows (dicts; a missing key is an empty cell) as CSV text with the given columns."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(columns)
+    for row in rows:
+        writer.writerow([format_cell(row.get(c), fmt) for c in columns])
+    return out.getvalue()
 
 
 def parse_cell(text: str | None) -> Any:
