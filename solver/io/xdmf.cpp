@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/run_layout.hpp"
+
 namespace slidewave {
 namespace {
 
@@ -27,7 +29,24 @@ std::ofstream open_exact(const std::string& path) {
   return out;
 }
 
-void finish(std::ofstream& out, const std::string& path) {
+/// Both sidecars are one temporal collection of uniform grids, one a time step.
+std::ofstream begin_temporal_collection(const std::string& path, const char* name) {
+  std::ofstream out = open_exact(path);
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  return out;
+}
+
+/// Opens the grid of time step k, named PREFIX_k with k zero-padded to `digits` digits.
+void begin_time_step(std::ofstream& out, const char* prefix, int digits, std::size_t k, double t) {
+  char id[32];
+  std::snprintf(id, sizeof id, "%0*zu", digits, k);
+  out << "   <Grid Name=\"" << prefix << "_" << id << "\" GridType=\"Uniform\">\n"
+      << "    <Time Value=\"" << t << "\"/>\n";
+}
+
+void end_temporal_collection(std::ofstream& out, const std::string& path) {
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path);
 }
@@ -64,15 +83,11 @@ std::string interface_xdmf_path_for(const std::string& h5_path) {
 void write_bulk_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& rec) {
   const std::string n_nodes = std::to_string(rec.snapshot_mesh.coordinates.size() / 2);
   const std::string n_elements = std::to_string(rec.snapshot_mesh.connectivity.size() / 4);
-  std::ofstream out = open_exact(path);
-  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"layer\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  std::ofstream out = begin_temporal_collection(path, "layer");
   for (size_t s = 0; s < rec.snapshots.size(); ++s) {
-    char id[32];
-    std::snprintf(id, sizeof id, "%04zu", s);
-    out << "   <Grid Name=\"snapshot_" << id << "\" GridType=\"Uniform\">\n"
-        << "    <Time Value=\"" << rec.snapshots[s].t << "\"/>\n"
-        << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n     "
+    const std::string id = run_layout::snapshot_id(s);
+    begin_time_step(out, "snapshot", 4, s, rec.snapshots[s].t);
+    out << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n     "
         << hdf_item(n_elements + " 4", "Int", 8, h5_name + ":/snapshots/connectivity") << "\n    </Topology>\n"
         << "    <Geometry GeometryType=\"XY\">\n     "
         << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":/snapshots/coordinates") << "\n    </Geometry>\n";
@@ -82,8 +97,7 @@ void write_bulk_xdmf(const std::string& path, const std::string& h5_name, const 
           << "\n    </Attribute>\n";
     out << "   </Grid>\n";
   }
-  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  finish(out, path);
+  end_temporal_collection(out, path);
 }
 
 // The line is a 2-D rectilinear mesh of 1 x n_c nodes (VX = /interface/x, VY = 0): no connectivity
@@ -93,15 +107,10 @@ void write_interface_xdmf(const std::string& path, const std::string& h5_name, c
   const auto& s = rec.interface;
   const std::string n_c = std::to_string(s.x.size());
   const std::string n_out = std::to_string(s.t.size());
-  std::ofstream out = open_exact(path);
-  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"interface\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  std::ofstream out = begin_temporal_collection(path, "interface");
   for (size_t k = 0; k < s.t.size(); ++k) {
-    char id[32];
-    std::snprintf(id, sizeof id, "%05zu", k);
-    out << "   <Grid Name=\"interface_" << id << "\" GridType=\"Uniform\">\n"
-        << "    <Time Value=\"" << s.t[k] << "\"/>\n"
-        << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"1 " << n_c << "\"/>\n"
+    begin_time_step(out, "interface", 5, k, s.t[k]);
+    out << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"1 " << n_c << "\"/>\n"
         << "    <Geometry GeometryType=\"VXVY\">\n     "
         << hdf_item(n_c, "Float", 8, h5_name + ":/interface/x") << "\n"
         << "     <DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0</DataItem>\n"
@@ -115,8 +124,7 @@ void write_interface_xdmf(const std::string& path, const std::string& h5_name, c
           << "\n     </DataItem>\n    </Attribute>\n";
     out << "   </Grid>\n";
   }
-  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  finish(out, path);
+  end_temporal_collection(out, path);
 }
 
 void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record) {

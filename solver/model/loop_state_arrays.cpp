@@ -20,18 +20,11 @@ void for_each_vector(State& loop, F&& visit) {
   visit("u_contact_start", loop.recording.u_contact_start);
 }
 
-const std::vector<double>& find_reals(const StateArrays& a, const std::string& name, std::size_t size) {
-  const auto found = a.reals.find(name);
-  if (found == a.reals.end()) throw std::runtime_error("checkpoint: no array " + name);
-  if (found->second.size() != size)
-    throw std::runtime_error("checkpoint: " + name + " has " + std::to_string(found->second.size()) +
-                             " values, this model " + std::to_string(size));
-  return found->second;
-}
-
-const std::vector<std::int64_t>& find_integers(const StateArrays& a, const std::string& name, std::size_t size) {
-  const auto found = a.integers.find(name);
-  if (found == a.integers.end()) throw std::runtime_error("checkpoint: no array " + name);
+/// The array `name` of one kind (a.reals or a.integers), which must hold `size` values for this model.
+template <class Arrays>
+const typename Arrays::mapped_type& find_array(const Arrays& arrays, const std::string& name, std::size_t size) {
+  const auto found = arrays.find(name);
+  if (found == arrays.end()) throw std::runtime_error("checkpoint: no array " + name);
   if (found->second.size() != size)
     throw std::runtime_error("checkpoint: " + name + " has " + std::to_string(found->second.size()) +
                              " values, this model " + std::to_string(size));
@@ -63,20 +56,20 @@ StateArrays to_arrays(const LoopState& loop) {
 
 void restore_from_arrays(const StateArrays& a, LoopState& loop) {
   for_each_vector(loop, [&](const char* name, Eigen::VectorXd& v) {
-    const auto& values = find_reals(a, name, static_cast<std::size_t>(v.size()));
+    const auto& values = find_array(a.reals, name, static_cast<std::size_t>(v.size()));
     std::copy(values.begin(), values.end(), v.data());
   });
-  loop.friction.per_node = find_reals(a, "friction", loop.friction.per_node.size());
-  const auto& scalars = find_reals(a, "scalars", 6);
+  loop.friction.per_node = find_array(a.reals, "friction", loop.friction.per_node.size());
+  const auto& scalars = find_array(a.reals, "scalars", 6);
   loop.t_end = scalars[0];
   loop.energy.energy_start = scalars[1];
   loop.energy.work_external = scalars[2];
   loop.energy.dissipation_friction = scalars[3];
   loop.energy.work_contact_normal = scalars[4];
   loop.recording.t_first_opening = scalars[5];
-  const auto& contact = find_integers(a, "contact", loop.contact.size());
+  const auto& contact = find_array(a.integers, "contact", loop.contact.size());
   for (std::size_t k = 0; k < contact.size(); ++k) loop.contact[k] = static_cast<ContactState>(contact[k]);
-  const auto& counters = find_integers(a, "counters", 3);
+  const auto& counters = find_array(a.integers, "counters", 3);
   if (counters[2] < 0 || counters[2] > 1) throw std::runtime_error("checkpoint: bad end_reason code");
   loop.step = counters[0];
   loop.recording.next_snapshot = static_cast<std::size_t>(counters[1]);

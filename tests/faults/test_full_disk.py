@@ -3,19 +3,20 @@ which needs no root) end the run with exit 4 and a message that names the file a
 system's reason; no RUN.h5 and no temporary file is left. Also: a corrupted dataset is reported by
 h5py through the Fletcher32 checksum every dataset carries (item 13).
 
-Self-contained: runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN) in temporary folders."""
+Runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN: tests/support/solver_runs.py) in temporary
+folders."""
 
 import json
-import os
 import subprocess
+import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+from solver_runs import solver_or_skip  # noqa: E402
 
 # H/16, ~5000 steps: over a megabyte of output, far above the 200 KiB file-size limit.
 CONFIG = {
@@ -28,11 +29,7 @@ SMALL = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0},
 
 
 def solver():
-    if not (SOLVER.is_file() and os.access(SOLVER, os.X_OK)):
-        if os.environ.get("CI") == "true":
-            pytest.fail(f"solver binary {SOLVER} not built")
-        pytest.skip(f"solver binary {SOLVER} not built")
-    return str(SOLVER)
+    return str(solver_or_skip())
 
 
 def run_limited(folder, config, limit_kib):

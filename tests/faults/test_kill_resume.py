@@ -4,13 +4,15 @@ for byte equal to an uninterrupted run; a stopped run (exit 3) never creates or 
 leaves RUN.partial.h5 (complete = 0, end_reason interrupted) with RUN.checkpoint.h5; a checkpoint of
 another configuration is refused (exit 2) naming the key; without a checkpoint --resume starts over.
 
-Self-contained: runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN) in temporary folders."""
+Runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN: tests/support/solver_runs.py) in temporary
+folders."""
 
 import json
 import os
 import shutil
 import signal
 import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -18,8 +20,8 @@ import h5py
 import numpy as np
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+from solver_runs import solver_or_skip  # noqa: E402
 
 # H/16 with a short step: ~30000 steps, a few seconds of wall time; checkpoints every 0.2 s.
 CONFIG = {
@@ -32,11 +34,7 @@ CONFIG = {
 
 
 def solver():
-    if not (SOLVER.is_file() and os.access(SOLVER, os.X_OK)):
-        if os.environ.get("CI") == "true":
-            pytest.fail(f"solver binary {SOLVER} not built")
-        pytest.skip(f"solver binary {SOLVER} not built")
-    return str(SOLVER)
+    return str(solver_or_skip())
 
 
 def write_config(folder, config=CONFIG):

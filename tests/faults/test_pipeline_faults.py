@@ -2,22 +2,24 @@
 must leave no run that looks like a result, and the next call must compute the runs again (or resume
 them), so that no table row comes from an interrupted run (issue: interrupted runs entered the tables).
 
-Self-contained (no conftest): needs the built solver (skipped without it, a failure under CI=true)."""
+Needs tests/support/solver_runs.py and the built solver (skipped without it, a failure under CI=true)."""
 
 import csv
 import json
 import os
 import signal
 import subprocess
+import sys
 import time
 from pathlib import Path
 
 import h5py
-import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+from solver_runs import solver_or_skip  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[2]
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
 
 # Two H/32 points with a small time step: about 13000 steps each (3 s of CPU), long enough to be
 # stopped in the middle also on an idle machine.
@@ -33,15 +35,6 @@ sweeps:
     run_length: {{t_end: 600.0, stop_after_opening_transits: null}}
     products: []
 """
-
-
-def solver_or_skip():
-    if SOLVER.is_file() and os.access(SOLVER, os.X_OK):
-        return SOLVER
-    message = f"solver binary {SOLVER} not built (bash scripts/build.sh)"
-    if os.environ.get("CI") == "true":
-        pytest.fail(message)
-    pytest.skip(message)
 
 
 def snakemake_command(work, config_file):

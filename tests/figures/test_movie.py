@@ -5,41 +5,29 @@ The tiny run (H/8, 60 s, a bulk snapshot every 3 s: 21 frames) takes a few secon
 solver binary or ffmpeg/ffprobe the tests that need them are skipped (a failure under CI=true).
 """
 import json
-import os
 import shutil
 import subprocess
-from pathlib import Path
+import sys
 
 import pytest
 from figure_support import ROOT, call, command
 
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", ROOT / "build" / "slidewave"))
+sys.path.insert(0, str(ROOT / "tests" / "support"))
+from solver_runs import missing, tiny_run as solver_run  # noqa: E402
+
 FRAME_TIMES = [3.0 * k for k in range(21)]
-
-
-def _missing(message):
-    if os.environ.get("CI") == "true":
-        pytest.fail(message)
-    pytest.skip(message)
 
 
 @pytest.fixture(scope="module")
 def tiny_run(tmp_path_factory):
-    if not (SOLVER.is_file() and os.access(SOLVER, os.X_OK)):
-        _missing(f"solver binary {SOLVER} not built")
-    folder = tmp_path_factory.mktemp("movie")
-    config = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0},
-              "output": {"interface_stride": 1, "snapshot_times": FRAME_TIMES, "progress": "never"}}
-    (folder / "config.json").write_text(json.dumps(config))
-    subprocess.run([str(SOLVER), "run", str(folder / "config.json"), "-o", str(folder / "run.h5")],
-                   check=True, capture_output=True, timeout=300)
-    return folder / "run.h5"
+    return solver_run(tmp_path_factory.mktemp("movie"),
+                      {"interface_stride": 1, "snapshot_times": FRAME_TIMES, "progress": "never"})
 
 
 def ffprobe(path):
     """{nb_read_frames, width, height, codec_name, duration} of the first video stream."""
     if not shutil.which("ffprobe"):
-        _missing("ffprobe not installed (Debian: apt-get install ffmpeg)")
+        missing("ffprobe not installed (Debian: apt-get install ffmpeg)")
     result = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
                              "-show_entries", "stream=nb_read_frames,width,height,codec_name,duration",
                              "-of", "json", str(path)], check=True, capture_output=True, text=True)
@@ -48,7 +36,7 @@ def ffprobe(path):
 
 def test_mp4_has_one_frame_per_snapshot(tiny_run, tmp_path):
     if not shutil.which("ffmpeg"):
-        _missing("ffmpeg not installed (Debian: apt-get install ffmpeg)")
+        missing("ffmpeg not installed (Debian: apt-get install ffmpeg)")
     out = tmp_path / "movie.mp4"
     result = command(ROOT / "figures" / "movie.py", tiny_run, "--out", out, "--fps", 10, "--dpi", 60)
     assert result.returncode == 0, result.stderr
@@ -66,7 +54,7 @@ def test_mp4_has_one_frame_per_snapshot(tiny_run, tmp_path):
 
 def test_time_range_selects_frames(tiny_run, tmp_path):
     if not shutil.which("ffmpeg"):
-        _missing("ffmpeg not installed (Debian: apt-get install ffmpeg)")
+        missing("ffmpeg not installed (Debian: apt-get install ffmpeg)")
     out = tmp_path / "part.mp4"
     assert call("movie", tiny_run, "--out", out, "--tmin", 10, "--tmax", 31, "--dpi", 40) == 0
     assert int(ffprobe(out)["nb_read_frames"]) == 7  # 12, 15, ..., 30 s

@@ -8,25 +8,18 @@ is a wrong pointer, shape or type). The reader is VTK's vtkXdmfReader (XDMF 2 li
 (python3-paraview, scripts/setup.sh). Skipped without it or without the solver binary (a failure
 under CI=true).
 """
-import json
-import os
-import subprocess
+import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
+from solver_runs import missing, tiny_run  # noqa: E402
+
 SNAPSHOT_TIMES = [0.0, 20.0, 45.5]
 INTERFACE_FIELDS = ("slip_velocity", "slip", "opening", "normal_traction", "tangential_traction", "state")
-
-
-def _missing(message):
-    if os.environ.get("CI") == "true":
-        pytest.fail(message)
-    pytest.skip(message)
 
 
 @pytest.fixture(scope="module")
@@ -37,22 +30,15 @@ def vtk():
         from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
         from vtkmodules.vtkIOXdmf2 import vtkXdmfReader
     except ImportError:
-        _missing("no vtkXdmfReader: Debian's python3-vtk9 is built without XDMF; its reader comes "
+        missing("no vtkXdmfReader: Debian's python3-vtk9 is built without XDMF; its reader comes "
                  "with ParaView's VTK (apt-get install python3-paraview)")
     return vtkXdmfReader, vtk_to_numpy, vtkStreamingDemandDrivenPipeline.TIME_STEPS()
 
 
 @pytest.fixture(scope="module")
 def run_file(tmp_path_factory):
-    if not (SOLVER.is_file() and os.access(SOLVER, os.X_OK)):
-        _missing(f"solver binary {SOLVER} not built")
-    folder = tmp_path_factory.mktemp("xdmf")
-    config = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0},
-              "output": {"interface_stride": 4, "snapshot_times": SNAPSHOT_TIMES, "progress": "never"}}
-    (folder / "config.json").write_text(json.dumps(config))
-    subprocess.run([str(SOLVER), "run", str(folder / "config.json"), "-o", str(folder / "run.h5")],
-                   check=True, capture_output=True, timeout=300)
-    return folder / "run.h5"
+    return tiny_run(tmp_path_factory.mktemp("xdmf"),
+                    {"interface_stride": 4, "snapshot_times": SNAPSHOT_TIMES, "progress": "never"})
 
 
 def read_all_times(vtk, path):

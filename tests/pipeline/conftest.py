@@ -16,7 +16,9 @@ if str(REPO) not in sys.path:
     sys.path.insert(0, str(REPO))
 
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
-SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
+# SOLVER and solver_or_skip are re-exported to the pipeline tests.
+sys.path.insert(0, str(REPO / "tests" / "support"))
+from solver_runs import SOLVER, solver_or_skip  # noqa: E402,F401
 
 
 def pytest_configure(config):
@@ -49,16 +51,6 @@ def study_config():
 def config(study_config):
     """A copy of the validated study config that a test may change."""
     return copy.deepcopy(study_config)
-
-
-def solver_or_skip():
-    """The solver binary; skipped when it is not built, a failure under CI=true."""
-    if SOLVER.is_file() and os.access(SOLVER, os.X_OK):
-        return SOLVER
-    message = f"solver binary {SOLVER} not built (cmake -S . -B build && cmake --build build)"
-    if os.environ.get("CI") == "true":
-        pytest.fail(message)
-    pytest.skip(message)
 
 
 def snakemake(workdir, *args, env=None, check=True, timeout=1800):

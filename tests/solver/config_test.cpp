@@ -295,15 +295,7 @@ TEST(Config, ConfigBytesAreReadOnceAndVerbatim) {
 
 // ---- the CLI -------------------------------------------------------------------------------------
 
-struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("slidewave_test_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
+using testing::TempDir;
 
 /// Runs a shell command; returns the exit code (-1 if it did not exit normally).
 int run(const std::string& command) {

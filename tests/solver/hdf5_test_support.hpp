@@ -1,36 +1,50 @@
 #pragma once
-// Helpers of the run-file tests: a temporary folder, and every dataset of an HDF5 file read as raw
-// bytes with its shape (the oracle of "same datasets, byte for byte").
+// Helpers of the run-file tests: a small real run, the datasets of an HDF5 file, and every dataset
+// read as raw bytes with its shape (the oracle of "same datasets, byte for byte").
 #include <hdf5.h>
-#include <unistd.h>
 
-#include <algorithm>
-#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "model/layer_model.hpp"
+#include "model/simulation.hpp"
+#include "test_support.hpp"
 
 namespace slidewave::testing {
 
 /// As in main(): a test that makes a close fail (full disk) must not crash the binary at exit.
 inline const bool kSkipHdf5CleanupAtExit = (H5dont_atexit(), true);
 
-struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("slidewave_test_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+/// The input of the small real run (H/4, 60 s: a few thousand steps), kept verbatim for provenance.
+inline const char* const kSmallRunInput = R"({"mesh": {"elements_per_H": 4}, "time": {"t_end": 60.0},
+  "output": {"interface_stride": 3, "snapshot_times": [0, 30], "progress": "never"}})";
+
+struct SmallRun {
+  RunConfig config;
+  RunRecord record;
 };
+
+/// kSmallRunInput simulated once per test binary.
+inline const SmallRun& small_run() {
+  static const SmallRun run = [] {
+    const RunConfig config = parse_run_config(nlohmann::json::parse(kSmallRunInput));
+    return SmallRun{config, simulate(LayerModel(config))};
+  }();
+  return run;
+}
+
+/// The path (without the leading '/') of every dataset in an open file, in the file's name order.
+inline std::vector<std::string> dataset_names(hid_t file) {
+  std::vector<std::string> names;
+  H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE,
+           [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+             if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(name);
+             return 0;
+           },
+           &names);
+  return names;
+}
 
 /// A dataset as stored: element class and size, shape, raw bytes in memory order.
 struct RawDataset {
@@ -49,14 +63,7 @@ inline std::map<std::string, RawDataset> read_all_datasets(const std::string& pa
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) return out;
-  std::vector<std::string> names;
-  H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE,
-           [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
-             if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(name);
-             return 0;
-           },
-           &names);
-  for (const auto& name : names) {
+  for (const auto& name : dataset_names(file)) {
     const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
     const hid_t type = H5Dget_type(set), space = H5Dget_space(set);
     RawDataset raw;

@@ -17,28 +17,17 @@
 #include "io/xdmf.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
-#include "test_support.hpp"
+#include "hdf5_test_support.hpp"
 
 namespace slidewave {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / ("slidewave_test_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-};
+using testing::dataset_names;
+using testing::kSmallRunInput;
+using testing::small_run;
+using testing::TempDir;
 
 // ---- minimal HDF5 readers ----------------------------------------------------------------------
 
@@ -114,29 +103,13 @@ std::string dataset_attribute(hid_t file, const std::string& path, const char* n
   return value;
 }
 
-// ---- a small real run --------------------------------------------------------------------------
-
-const char* kInput = R"({"mesh": {"elements_per_H": 4}, "time": {"t_end": 60.0},
-  "output": {"interface_stride": 3, "snapshot_times": [0, 30], "progress": "never"}})";
-
-struct SmallRun {
-  RunConfig config;
-  RunRecord record;
-};
-
-const SmallRun& small_run() {
-  static const SmallRun run = [] {
-    const RunConfig config = parse_run_config(nlohmann::json::parse(kInput));
-    return SmallRun{config, simulate(LayerModel(config))};
-  }();
-  return run;
-}
+// ---- the small real run (hdf5_test_support.hpp) written and read back ------------------------------
 
 TEST(RunFile, RoundTripWithProvenance) {
   const TempDir dir("h5_roundtrip");
   const auto& [config, rec] = small_run();
   const std::string path = (dir.path / "run.h5").string();
-  const Provenance provenance{"slidewave run config.json -o run.h5", kInput};
+  const Provenance provenance{"slidewave run config.json -o run.h5", kSmallRunInput};
   ASSERT_NO_THROW(write_run_file(path, config, rec, provenance));
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.h5", "run.interface.xdmf", "run.xdmf"})) << "no temporary left";
 
@@ -163,7 +136,7 @@ TEST(RunFile, RoundTripWithProvenance) {
   // /setup: the verbatim input and every derived constant, as attributes (format 2: not at the root).
   const hid_t setup = H5Gopen2(file, "setup", H5P_DEFAULT);
   ASSERT_GE(setup, 0);
-  EXPECT_EQ(read_string_attribute(setup, "config_input"), kInput) << "verbatim input";
+  EXPECT_EQ(read_string_attribute(setup, "config_input"), kSmallRunInput) << "verbatim input";
   const DerivedConstants d = config.derived();
   const struct { const char* name; double value; } numbers[] = {
       {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},
@@ -242,13 +215,7 @@ TEST(RunFile, RoundTripWithProvenance) {
   }
 
   // Every dataset carries unit and description.
-  std::vector<std::string> datasets;
-  H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE,
-           [](hid_t, const char* name, const H5O_info_t* info, void* out) -> herr_t {
-             if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(out)->push_back(name);
-             return 0;
-           },
-           &datasets);
+  const std::vector<std::string> datasets = dataset_names(file);
   EXPECT_GE(datasets.size(), 8u + 12u + 2u + 4u);
   for (const auto& p : datasets) {
     const std::string unit = dataset_attribute(file, p, "unit"), description = dataset_attribute(file, p, "description");

@@ -23,21 +23,8 @@ namespace {
 
 using testing::TempDir;
 
-const char* kInput = R"({"mesh": {"elements_per_H": 4}, "time": {"t_end": 60.0},
-  "output": {"interface_stride": 3, "snapshot_times": [0, 30], "progress": "never"}})";
-
-struct SmallRun {
-  RunConfig config;
-  RunRecord record;
-};
-
-const SmallRun& small_run() {
-  static const SmallRun run = [] {
-    const RunConfig config = parse_run_config(nlohmann::json::parse(kInput));
-    return SmallRun{config, simulate(LayerModel(config))};
-  }();
-  return run;
-}
+using testing::kSmallRunInput;
+using testing::small_run;
 
 /// Rows [g0, g1) of the global series, [i0, i1) of the interface series and snapshots [s0, s1) of `all`,
 /// with the layout (x, columns, mesh) and outcome of `all`.
@@ -64,7 +51,7 @@ RunRecord rows_of(const RunRecord& all, size_t g0, size_t g1, size_t i0, size_t 
 TEST(RunWriter, DrainedInBlocksEqualsWholeFile) {
   const TempDir dir("writer_blocks");
   const auto& [config, rec] = small_run();
-  const Provenance provenance{"call", kInput};
+  const Provenance provenance{"call", kSmallRunInput};
   write_run_file(dir / "whole.h5", config, rec, provenance);
 
   const size_t n_g = rec.global.t.size(), n_i = rec.interface.t.size();

@@ -1,9 +1,14 @@
 #pragma once
 // Small helpers shared by the test files (no assertions here: each test states its own oracle).
 #include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "config/run_config.hpp"
 
@@ -39,5 +44,23 @@ inline RunConfig make_config(const nlohmann::json& overrides = nlohmann::json::o
   j["output"]["progress"] = "never";
   return parse_run_config(j);
 }
+
+/// A fresh folder under the system's temporary directory, removed with everything in it at scope exit.
+struct TempDir {
+  std::filesystem::path path;
+  explicit TempDir(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / ("slidewave_test_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::string operator/(const std::string& name) const { return (path / name).string(); }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(path)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
 
 }  // namespace slidewave::testing
