@@ -21,6 +21,7 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
   u_work_.resize(n);
   Ku_next_.resize(n);
   Ma_next_.resize(n_f);
+  acc_f_next_.resize(n_f);
 }
 
 HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
@@ -65,9 +66,9 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
   rhs_.head(n_c) += w_ * r_next;
   K_eff_->solve_into(rhs_, u_work_.head(n_f));
   u_work_.tail(n_d) = u_d_next_;
-  const Eigen::VectorXd acc_f_next = hht_.mass_factor() * (u_work_.head(n_f) - u_tilde_);
-  s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next);
-  s.acc.head(n_f) = acc_f_next;
+  acc_f_next_.noalias() = hht_.mass_factor() * (u_work_.head(n_f) - u_tilde_);
+  s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next_);
+  s.acc.head(n_f) = acc_f_next_;
 
   Ku_next_.noalias() = system_.K * u_work_;
   Ma_next_ = -(1 - a) * Ku_next_.head(n_f) - a * s.Ku.head(n_f);

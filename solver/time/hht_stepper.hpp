@@ -80,7 +80,7 @@ class HHTStepper {
   HHTCoefficients hht_;
   double w_, w_previous_;
   std::unique_ptr<LinearSolver> K_eff_;
-  Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, r_previous_;
+  Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, acc_f_next_, r_previous_;
 };
 
 }  // namespace slidewave
