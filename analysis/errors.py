@@ -10,6 +10,3 @@ output file.
 class InputError(Exception):
     """An input that is missing, unreadable, malformed, of an unknown format or out of range."""
 
-
-#: Former name of InputError (figures/_data.py imports it); the same class, not a second concept.
-AnalysisError = InputError

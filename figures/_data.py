@@ -4,8 +4,8 @@ flutter.txt.
 Figures compute nothing: this module only opens files, checks what the figures need, and hands
 arrays and rows to the plotting code. A run file is read by `analysis.io.load_run`, the project's
 one reader, which checks `format_version` first; the bulk snapshots, which it does not read, are
-read here after that check. Every problem with an input is an `InputError` (or the analysis
-package's `AnalysisError`) whose message names the file and what is wrong.
+read here after that check. Every problem with an input is the analysis package's `InputError`
+(one error class for the whole Python side), whose message names the file and what is wrong.
 """
 import json
 import math
@@ -17,16 +17,12 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
-from analysis.errors import AnalysisError  # noqa: E402
+from analysis.errors import InputError  # noqa: E402
 from analysis.io import load_run  # noqa: E402
 from analysis.table_csv import parse_cell, read_table  # noqa: E402
 
-__all__ = ["AnalysisError", "InputError", "Run", "open_run", "read_csv", "read_flutter",
+__all__ = ["InputError", "Run", "open_run", "read_csv", "read_flutter",
            "read_json", "select"]
-
-
-class InputError(Exception):
-    """An input file is missing, malformed or lacks what a figure needs."""
 
 
 class Run:
@@ -105,7 +101,7 @@ def read_json(path):
 
 def read_csv(path, required):
     """Rows of a table of `analysis aggregate` as dicts of parsed values (analysis.table_csv); an
-    AnalysisError names any missing required column, an InputError a table without rows."""
+    InputError names any missing required column or a table without rows."""
     rows = read_table(path, required)
     if not rows:
         raise InputError(f"{path}: no data rows")

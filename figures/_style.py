@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from _data import AnalysisError, InputError  # noqa: E402
+from _data import InputError  # noqa: E402
 
 plt.rcParams.update({
     "font.size": 9,
@@ -107,6 +107,6 @@ def cli(main):
     """Run main(); a bad input becomes 'script: error: ...' on stderr and exit status 2."""
     try:
         sys.exit(main())
-    except (InputError, AnalysisError) as err:
+    except InputError as err:
         print(f"{os.path.basename(sys.argv[0])}: error: {err}", file=sys.stderr)
         sys.exit(2)

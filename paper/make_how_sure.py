@@ -12,6 +12,7 @@ import json
 import sys
 
 from table_io import write_atomically
+from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
 
 #: analysis.ensemble's systematic groups -> the macro stem of each.
 GROUP_STEMS = {"supersonic backward": "Supersonic", "nu 0-0.1, f 1.1-1.2": "LowNu",
@@ -19,10 +20,6 @@ GROUP_STEMS = {"supersonic backward": "Supersonic", "nu 0-0.1, f 1.1-1.2": "LowN
 #: analysis.envelope's factors -> macro stem.
 FACTOR_STEMS = {"seed": "Seed", "mesh": "Mesh", "time step": "TimeStep", "integration": "Integration",
                 "contact weighting": "Contact"}
-
-
-class InputError(Exception):
-    pass
 
 
 def read(path):

@@ -19,11 +19,6 @@ if "SLIDEWAVE_BIN" not in os.environ:
             " && cmake --build build --target slidewave -j{threads}) > {log} 2>&1"
 
 
-# `--resume`: continue from run.h5's checkpoint when one exists for the same config and build, else
-# start from the beginning, so that a job killed at a time limit continues where it stopped.
-RESUME_OPTION = "--resume"
-
-
 rule configure:
     """Write the solver configuration of one point (study/make_run_config.py)."""
     output: "results/{sweep}/{point}/config.json"
@@ -50,7 +45,7 @@ rule simulate:
     # (only RUN.partial.h5 and the checkpoint beside run.h5, which the next attempt resumes from),
     # 4 I/O error, a crash. An interrupted run is therefore never an output of this rule; the trap keeps
     # it so also when the job itself is signalled (Snakemake stopped, a scheduler's time limit).
-    shell: "trap 'rm -f {output}; exit 143' TERM INT; status=0; {input.solver} run {input.config} -o {output} --threads {threads} " + RESUME_OPTION +
+    shell: "trap 'rm -f {output}; exit 143' TERM INT; status=0; {input.solver} run {input.config} -o {output} --threads {threads} --resume"
            " > {log} 2>&1 || status=$?;"
            " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output} ]; }}"
            " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log}; rm -f {output}; exit 1; }}"
