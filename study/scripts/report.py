@@ -216,7 +216,10 @@ def runs_html(runs: list[dict]) -> str:
                    f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
     out.append("</table></div>")
     out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
-               "the run. Wall time and memory: Snakemake's benchmark of the solver.</p>")
+               "the run; with hht_alpha &gt; 0 it is the algorithmic dissipation of HHT (measured term by "
+               "term against the residual in paper/reproduction.pdf, &ldquo;What the energy residual is&rdquo;; "
+               "docs/energy-balance.md). "
+               "Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")
     return "\n".join(out)
 
