@@ -52,8 +52,11 @@ CAPTIONS = {
     "spacetime_opening": "Opening of the interface in space and time, with the slopes of c_l, c_s and the measured c_p",
     "spacetime_state": "Stick, slip and open zones of the interface in space and time",
     "snapshots": "Material velocity in the deformed layer, slip velocity and opening along the interface at successive times",
-    "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding",
-    "celerity_vs_nu": "Slip-front celerity against nu, regenerated and published, with c_s, sqrt(2) c_s and c_l",
+    "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding, and the "
+                     "paper's Table-1 cells (arrow: direction of the published opening wave; not-equal sign: our "
+                     "category differs)",
+    "celerity_vs_nu": "Slip-front celerity against nu, regenerated (filled) and published (open), one colour and "
+                      "marker per f, with c_s, sqrt(2) c_s and c_l",
     "deviation_map": "Deviation of the regenerated celerity from the published one for each published cell (framed: reproduced; crossed: another category than published)",
     "tn_curves": "Global friction ratio T/N against time",
     "tn_aligned": "T/N against the time since the start of each run's first frictional drop (x: the run stopped during the drop)",
