@@ -1,7 +1,7 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
 
 localrules: aggregate, aggregate_study, compare, reference_check, flutter, publish_table, publish_results,
-    ensemble_table, envelope, paper_how_sure
+    ensemble_table, envelope, paper_how_sure, rule_scores
 
 
 ruleorder: aggregate_study > aggregate
@@ -93,6 +93,28 @@ rule reference_check:
         "{PYTHON} -m analysis compare {input.table} --reference {input.reference}"
         " --tolerance {params.tolerance} --min-within {params.min_within} --ratchet {params.known} > {log} 2>&1"
         " && cp {log} {output}"
+
+
+RULE_SCORES = [f"results/{config['reference']['check_sweep']}/table/rule_scores.{ext}" for ext in ("csv", "md", "tex")]
+
+
+rule rule_scores:
+    """`python3 -m analysis score-rules`: Table 1 scored under every celerity rule of
+    docs/measurement-rule.md, side by side (the default rule marked), on the check sweep's runs (the
+    published cells at H/64, seed 1)."""
+    input:
+        metrics=run_files(config["reference"]["check_sweep"], "metrics.json"),
+        reference=repo_path(config["reference"]["table"]),
+    output: RULE_SCORES
+    params:
+        directory=f"results/{config['reference']['check_sweep']}/table",
+        tolerance=config["reference"]["tolerance"],
+        select=table_select(points(config["reference"]["check_sweep"]),
+                            sweep_spec(config["reference"]["check_sweep"]).get("highlight")),
+    log: f"results/{config['reference']['check_sweep']}/logs/rule_scores.log"
+    shell:
+        "{PYTHON} -m analysis score-rules {input.metrics} --reference {input.reference}"
+        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
 rule flutter:
@@ -220,13 +242,14 @@ rule fig_envelope:
 
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
                   "paper/generated/envelope.tex", "paper/generated/envelope.pdf",
-                  "paper/generated/phase_diagram_ensemble.pdf"]
+                  "paper/generated/phase_diagram_ensemble.pdf",
+                  "paper/generated/rule_scores.tex"]
 
 
 rule paper_how_sure:
     """The generated inputs of paper/how_sure.tex: its numbers (paper/make_how_sure.py), the
     ensemble and envelope tables, the envelope figure and the ensemble's phase diagram. Through
-    the paper, `all` runs the ensemble sweep and the variant sweeps."""
+    the paper, `all` runs the ensemble sweep and the variant sweeps. The rule scores: rule `rule_scores`."""
     input:
         script="paper/make_how_sure.py",
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
@@ -235,6 +258,7 @@ rule paper_how_sure:
         envelope_table="results/envelope/envelope.tex",
         figure="results/envelope/envelope.pdf",
         phase_diagram=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/figures/phase_diagram_ensemble.pdf",
+        rule_scores=RULE_SCORES[2],
     output: HOW_SURE_FILES
     log: "logs/paper_how_sure.log"
     shell:
@@ -243,4 +267,5 @@ rule paper_how_sure:
         " && cp {input.ensemble_table} paper/generated/ensemble.tex"
         " && cp {input.envelope_table} paper/generated/envelope.tex"
         " && cp {input.figure} paper/generated/envelope.pdf"
-        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf) > {log} 2>&1"
+        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf"
+        " && cp {input.rule_scores} paper/generated/rule_scores.tex) > {log} 2>&1"

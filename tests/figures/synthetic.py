@@ -169,7 +169,7 @@ def metrics_rows():
                  dissipative_friction_before_opening=0.9 * f,
                  friction_energy_share_opening=0.5 if opening else None,
                  dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
-                 below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, run_complete=True,
+                 below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, complete=True,
                  pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
                  localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
                  first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
