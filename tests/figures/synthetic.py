@@ -177,6 +177,9 @@ def metrics_rows():
                  later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1,
                  # the slowest shear rate stops during its second drop; the first one is complete
                  n_complete_drops=1 if r["V0_over_cs"] == 1e-6 else 2)
+        if not opening:  # the default rule measures the pulse that opens: none here
+            r.update(celerity=None, regime=None, below_sqrt2_cs=None, pulse_count=None, pulse_spacing=None,
+                     pulse_spacing_theory=math.nan)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
         # What `analysis aggregate` adds to all_metrics.csv.
         r.update(aggregate.derived_columns(r, flutter_boundary()))
