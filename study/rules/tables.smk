@@ -95,23 +95,32 @@ rule reference_check:
         " && cp {log} {output}"
 
 
-RULE_SCORES = [f"results/{config['reference']['check_sweep']}/table/rule_scores.{ext}" for ext in ("csv", "md", "tex")]
+def rule_score_points():
+    """(sweep, {name: point}) of the rule scores: the published cells at H/64 with the default seed,
+    i.e. the runs of the check sweep, taken from the ensemble sweep when the paper has one (its
+    seed-1 runs are the same points, so `all` runs nothing twice)."""
+    sweep = config["paper"].get("envelope", {}).get("ensemble") or config["reference"]["check_sweep"]
+    seed = config["defaults"]["seed"]
+    return sweep, {name: p for name, p in points(sweep).items() if p.get("seed", seed) == seed}
+
+
+RULE_SCORES_SWEEP, RULE_SCORES_POINTS = rule_score_points()
+RULE_SCORES = [f"results/{RULE_SCORES_SWEEP}/table/rule_scores.{ext}" for ext in ("csv", "md", "tex")]
 
 
 rule rule_scores:
     """`python3 -m analysis score-rules`: Table 1 scored under every celerity rule of
-    docs/measurement-rule.md, side by side (the default rule marked), on the check sweep's runs (the
-    published cells at H/64, seed 1)."""
+    docs/measurement-rule.md, side by side (the default rule marked), on the published cells at
+    H/64 with the default seed (`rule_score_points`)."""
     input:
-        metrics=run_files(config["reference"]["check_sweep"], "metrics.json"),
+        metrics=run_files(RULE_SCORES_SWEEP, "metrics.json", names=list(RULE_SCORES_POINTS)),
         reference=repo_path(config["reference"]["table"]),
     output: RULE_SCORES
     params:
-        directory=f"results/{config['reference']['check_sweep']}/table",
+        directory=f"results/{RULE_SCORES_SWEEP}/table",
         tolerance=config["reference"]["tolerance"],
-        select=table_select(points(config["reference"]["check_sweep"]),
-                            sweep_spec(config["reference"]["check_sweep"]).get("highlight")),
-    log: f"results/{config['reference']['check_sweep']}/logs/rule_scores.log"
+        select=table_select(RULE_SCORES_POINTS),
+    log: f"results/{RULE_SCORES_SWEEP}/logs/rule_scores.log"
     shell:
         "{PYTHON} -m analysis score-rules {input.metrics} --reference {input.reference}"
         " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
