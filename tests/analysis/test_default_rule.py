@@ -78,3 +78,15 @@ def test_a_run_that_opens_without_an_opening_pulse_is_opening_without_front(run_
 def test_metrics_carry_complete_once(run_file):
     m = measure(run_file, Scenario(pulses=[Pulse(0.85)]))
     assert m["complete"] is True and "run_complete" not in m
+
+
+def test_the_category_follows_the_opening_pulse_not_a_supersonic_precursor(run_file):
+    # nu = 0 (c_l = 1 m/s): a precursor at 1.05 m/s (supersonic) localizes first and never opens;
+    # the pulse that opens runs at 0.80 m/s (intersonic).
+    scenario = precursor_then_opening_pulse()
+    scenario.pulses[0].celerity = 1.05
+    m = measure(run_file, scenario)
+    assert m["celerity_rule_localization"] == pytest.approx(1.05, rel=5e-3)
+    assert m["celerity_rule_localization"] > m["c_l"]
+    assert m["celerity"] == pytest.approx(0.80, rel=5e-3) and m["regime"] == "intersonic"
+    assert m["category"] in ("intersonic_opening", "intersonic_opening_inversion")
