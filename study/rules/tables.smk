@@ -1,7 +1,7 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
 
 localrules: aggregate, aggregate_study, compare, reference_check, flutter, publish_table, publish_results,
-    ensemble_table, envelope, paper_how_sure
+    ensemble_table, envelope, paper_how_sure, rule_scores
 
 
 ruleorder: aggregate_study > aggregate
@@ -93,6 +93,37 @@ rule reference_check:
         "{PYTHON} -m analysis compare {input.table} --reference {input.reference}"
         " --tolerance {params.tolerance} --min-within {params.min_within} --ratchet {params.known} > {log} 2>&1"
         " && cp {log} {output}"
+
+
+def rule_score_points():
+    """(sweep, {name: point}) of the rule scores: the published cells at H/64 with the default seed,
+    i.e. the runs of the check sweep, taken from the ensemble sweep when the paper has one (its
+    seed-1 runs are the same points, so `all` runs nothing twice)."""
+    sweep = config["paper"].get("envelope", {}).get("ensemble") or config["reference"]["check_sweep"]
+    seed = config["defaults"]["seed"]
+    return sweep, {name: p for name, p in points(sweep).items() if p.get("seed", seed) == seed}
+
+
+RULE_SCORES_SWEEP, RULE_SCORES_POINTS = rule_score_points()
+RULE_SCORES = [f"results/{RULE_SCORES_SWEEP}/table/rule_scores.{ext}" for ext in ("csv", "md", "tex")]
+
+
+rule rule_scores:
+    """`python3 -m analysis score-rules`: Table 1 scored under every celerity rule of
+    docs/measurement-rule.md, side by side (the default rule marked), on the published cells at
+    H/64 with the default seed (`rule_score_points`)."""
+    input:
+        metrics=run_files(RULE_SCORES_SWEEP, "metrics.json", names=list(RULE_SCORES_POINTS)),
+        reference=repo_path(config["reference"]["table"]),
+    output: RULE_SCORES
+    params:
+        directory=f"results/{RULE_SCORES_SWEEP}/table",
+        tolerance=config["reference"]["tolerance"],
+        select=table_select(RULE_SCORES_POINTS),
+    log: f"results/{RULE_SCORES_SWEEP}/logs/rule_scores.log"
+    shell:
+        "{PYTHON} -m analysis score-rules {input.metrics} --reference {input.reference}"
+        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
 rule flutter:
@@ -220,13 +251,14 @@ rule fig_envelope:
 
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
                   "paper/generated/envelope.tex", "paper/generated/envelope.pdf",
-                  "paper/generated/phase_diagram_ensemble.pdf"]
+                  "paper/generated/phase_diagram_ensemble.pdf",
+                  "paper/generated/rule_scores.tex"]
 
 
 rule paper_how_sure:
     """The generated inputs of paper/how_sure.tex: its numbers (paper/make_how_sure.py), the
     ensemble and envelope tables, the envelope figure and the ensemble's phase diagram. Through
-    the paper, `all` runs the ensemble sweep and the variant sweeps."""
+    the paper, `all` runs the ensemble sweep and the variant sweeps. The rule scores: rule `rule_scores`."""
     input:
         script="paper/make_how_sure.py",
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
@@ -235,6 +267,7 @@ rule paper_how_sure:
         envelope_table="results/envelope/envelope.tex",
         figure="results/envelope/envelope.pdf",
         phase_diagram=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/figures/phase_diagram_ensemble.pdf",
+        rule_scores=RULE_SCORES[2],
     output: HOW_SURE_FILES
     log: "logs/paper_how_sure.log"
     shell:
@@ -243,4 +276,5 @@ rule paper_how_sure:
         " && cp {input.ensemble_table} paper/generated/ensemble.tex"
         " && cp {input.envelope_table} paper/generated/envelope.tex"
         " && cp {input.figure} paper/generated/envelope.pdf"
-        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf) > {log} 2>&1"
+        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf"
+        " && cp {input.rule_scores} paper/generated/rule_scores.tex) > {log} 2>&1"
