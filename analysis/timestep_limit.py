@@ -86,7 +86,8 @@ def dt_rows(runs: list[dict[str, Any]], published: dict) -> list[dict[str, Any]]
                              f"{sorted(meshes)}; pass tables of one mesh")
         fronts = [c for c in map(_backward, rows) if c is not None]
         adams = adams_celerity(nu, f)
-        row = {"nu": nu, "f": f, "dt_times_cs": dt, "n_runs": len(rows), "n_backward": len(fronts),
+        row = {"nu": nu, "f": f, "dt_times_cs": dt, "elements_per_H": meshes.pop(), "n_runs": len(rows),
+               "n_backward": len(fronts),
                "theory": adams, "published": published[(nu, f)]}
         if fronts:
             mean = statistics.fmean(fronts)
@@ -212,6 +213,8 @@ def timestep_files(tables, reference, tolerance) -> dict[str, str]:
         raise InputError("no run of a cell published with a backward celerity in the tables")
     cells = cell_rows(rows, tolerance)
     summary = summarize(cells, published, tolerance)
+    summary.update(dt_values=sorted({r["dt_times_cs"] for r in rows}), runs_per_point_max=max(r["n_runs"] for r in rows),
+                   meshes=sorted({r["elements_per_H"] for r in rows}))
     return {"timestep_limit.csv": csv_text(RUN_COLUMNS, rows),
             "timestep_cells.csv": csv_text(CELL_COLUMNS + ("value_follows_theory", "published_follows_theory"), cells),
             "timestep_limit.md": markdown(rows, cells, summary), "timestep_limit.tex": latex(rows),
