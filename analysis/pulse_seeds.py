@@ -118,7 +118,8 @@ def summarize(rows: list[dict[str, Any]], drops: dict[str, Any], cell: tuple[flo
     if drops["runs_stopped_after_opening"]:
         later += (f" {drops['runs_stopped_after_opening']} of the {drops['runs']} runs stop after the first "
                   "opening and cannot show one.")
-    return {"nu": cell[0], "f": cell[1], "by_period": rows, "later_drops": drops, "runs": runs,
+    return {"nu": cell[0], "f": cell[1], "paper_counts": {f"{lam:g}": n for lam, n in PAPER_COUNTS.items()},
+            "by_period": rows, "later_drops": drops, "runs": runs,
             "runs_count_equals_theory": equal, "count_sentence": sentence, "later_sentence": later}
 
 

@@ -109,7 +109,9 @@ def timeline_macros(s, path):
 
 
 def pulse_macros(s, path):
-    return {"limPulseRuns": get(s, "runs", path), "limPulseEqualTheory": get(s, "runs_count_equals_theory", path),
+    paper = get(s, "paper_counts", path)
+    return {"limPulsePaperPeriods": _series([f"${lam}$" for lam in paper]),
+            "limPulsePaperCounts": _series([str(n) for n in paper.values()]),"limPulseRuns": get(s, "runs", path), "limPulseEqualTheory": get(s, "runs_count_equals_theory", path),
             "limPulseCountSentence": get(s, "count_sentence", path),
             "limPulseLaterSentence": get(s, "later_sentence", path)}
 

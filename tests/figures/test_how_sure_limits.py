@@ -51,6 +51,7 @@ def test_numbers_of_the_limits_subsections(limits, tmp_path):
     assert macros["limDtConverging"] == "1" and macros["limDtSmallest"] == "0.0625"
     assert macros["limTlOneOnsetMean"] == "744" and macros["limTlPaperOnset"] == "787"
     assert macros["limTlTwoLabel"] == "meshes"
+    assert macros["limPulsePaperCounts"] == "1, 2 and 3" and macros["limPulsePaperPeriods"] == "$2$, $4$ and $6$"
     used = set(re.findall(r"\\(lim[A-Z]\w*)", (PAPER / "how_sure.tex").read_text()))
     assert used and used <= set(macros), sorted(used - set(macros))
     for name in ("mesh_limit", "timestep_backward", "backward_celerity"):
