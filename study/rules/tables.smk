@@ -381,14 +381,16 @@ rule paper_how_sure_limits:
     sentences (paper/make_how_sure_limits.py), tables and figures."""
     input:
         script="paper/make_how_sure_limits.py",
-        summaries=[f"results/limits/{name}" for name in ("mesh_limit_summary.json", "timestep_limit_summary.json",
-                                                         "timeline_summary.json", "pulse_seeds_summary.json")],
+        mesh="results/limits/mesh_limit_summary.json",
+        timestep="results/limits/timestep_limit_summary.json",
+        timeline="results/limits/timeline_summary.json",
+        pulses="results/limits/pulse_seeds_summary.json",
         tables=[f"results/limits/{name}" for name in ("mesh_limit.tex", "timestep_limit.tex", "timeline.tex",
                                                       "pulse_seeds.tex")],
         figures=[f"results/limits/{name}.pdf" for name in ("mesh_limit", "timestep_backward", "backward_celerity")],
     output: HOW_SURE_LIMITS_FILES
     log: "logs/paper_how_sure_limits.log"
     shell:
-        "({PYTHON} {input.script} --mesh {input.summaries[0]} --timestep {input.summaries[1]}"
-        " --timeline {input.summaries[2]} --pulses {input.summaries[3]} -o paper/generated/how_sure_limits.tex"
+        "({PYTHON} {input.script} --mesh {input.mesh} --timestep {input.timestep}"
+        " --timeline {input.timeline} --pulses {input.pulses} -o paper/generated/how_sure_limits.tex"
         " && cp {input.tables} {input.figures} paper/generated/) > {log} 2>&1"
