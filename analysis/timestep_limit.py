@@ -10,8 +10,8 @@ theory's value -c of Adams' steady supersonic slip wave (`analysis.supersonic`).
 not at all, ``timestep_limit.csv`` (one row per cell and dt), ``timestep_cells.csv`` (one per cell),
 ``timestep_limit.md``, ``.tex`` and ``timestep_limit_summary.json``.
 
-The rule for a limit (docs/supersonic-backward.md, section 6; fixed before the runs at dt c_s =
-0.0625 and 0.125 m existed). Over the three smallest dt c_s (each half the previous) of a cell, with
+The rule for a limit (docs/supersonic-backward.md, section 6; fixed before any run at dt c_s =
+0.0625 or 0.125 m had finished). Over the three smallest dt c_s (each half the previous) of a cell, with
 seed means m1, m2, m3 (largest dt first), the differences d_prev = m2 - m1, d_last = m3 - m2, and the
 seed range S = max - min at the smallest dt:
 
