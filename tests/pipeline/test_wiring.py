@@ -79,6 +79,10 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
     assert counts["ensemble_table"] == 1 and counts["fig_phase_diagram_ensemble"] == 1
     assert counts["envelope"] == 1 and counts["fig_envelope"] == 1 and counts["paper_how_sure"] == 1
+    # Its limits: mesh limit, backward pulses against dt, Fig. 3 timeline, pulse counts across seeds.
+    for rule in ("mesh_limit", "timestep_limit", "timeline", "pulse_seeds", "fig_mesh_limit", "fig_timestep_backward",
+                 "fig_backward_celerity", "paper_how_sure_limits"):
+        assert counts[rule] == 1, rule
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
 
