@@ -41,7 +41,7 @@ def test_quick_is_the_default_target(workdir):
 SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1,
                "table1_h32": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
                "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 38,
-               "table1_h256": 5, "timestep_backward": 3 * 4 * 3, "period_ensemble": 3 * 4, "long_ensemble": 4,
+               "table1_h256": 3, "timestep_backward": 2 * 4 * 3, "period_ensemble": 3 * 4, "long_ensemble": 4,
                "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3,
                "table1_ensemble": 38 * 8}
 
