@@ -132,11 +132,12 @@ std::mutex& planner_mutex() {
 }  // namespace
 
 struct BlockCirculantSolver::FftPlans {
-  fftw_plan forward = nullptr, inverse = nullptr;
+  fftw_plan forward = nullptr, inverse = nullptr;                  // all s rows
+  fftw_plan forward_contact = nullptr, inverse_contact = nullptr;  // rows 0, 1 (split solve)
   ~FftPlans() {
     std::lock_guard<std::mutex> lock(planner_mutex());
-    if (forward) fftw_destroy_plan(forward);
-    if (inverse) fftw_destroy_plan(inverse);
+    for (fftw_plan p : {forward, inverse, forward_contact, inverse_contact})
+      if (p) fftw_destroy_plan(p);
   }
 };
 
@@ -221,8 +222,16 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
     const fftw_iodim inverse_loops[2] = {{n_y, 2 * lanes, 2 * n_x}, {2, lanes, 1}};
     plans_->inverse = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 2, inverse_loops, spectrum_re, spectrum_im,
                                                    data.data(), flags);
+    // The same transforms restricted to the bottom row (j = 0): loads and displacements 2 i + d.
+    const fftw_iodim contact_loop_forward{2, 1, lanes}, contact_loop_inverse{2, lanes, 1};
+    plans_->forward_contact = fftw_plan_guru_split_dft_r2c(1, &forward_dim, 1, &contact_loop_forward, data.data(),
+                                                           spectrum_re, spectrum_im, flags);
+    plans_->inverse_contact = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 1, &contact_loop_inverse, spectrum_re,
+                                                           spectrum_im, data.data(), flags);
   }
-  if (!plans_->forward || !plans_->inverse) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+  if (!plans_->forward || !plans_->inverse || !plans_->forward_contact || !plans_->inverse_contact)
+    throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+  prepare_split();
 }
 
 BlockCirculantSolver::~BlockCirculantSolver() = default;
@@ -230,7 +239,9 @@ BlockCirculantSolver::BlockCirculantSolver(BlockCirculantSolver&&) noexcept = de
 BlockCirculantSolver& BlockCirculantSolver::operator=(BlockCirculantSolver&&) noexcept = default;
 
 std::size_t BlockCirculantSolver::memory_bytes() const {
-  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size());
+  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size() +
+                           G_re_.size() + G_im_.size() + kept_re_.size() + kept_im_.size() + contact_re_.size() +
+                           contact_im_.size());
 }
 
 namespace {
@@ -280,17 +291,37 @@ void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_r
 
 }  // namespace
 
+void BlockCirculantSolver::forward(const double* b, double* re, double* im) const {
+  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
+  fftw_execute_split_dft_r2c(plans_->forward, const_cast<double*>(b), re, im);
+}
+
+void BlockCirculantSolver::inverse(double* re, double* im, double* x) const {
+  fftw_execute_split_dft_c2r(plans_->inverse, re, im, x);
+}
+
+void BlockCirculantSolver::forward_contact(const double* g, double* re, double* im) const {
+  fftw_execute_split_dft_r2c(plans_->forward_contact, const_cast<double*>(g), re, im);
+}
+
+void BlockCirculantSolver::inverse_contact(double* re, double* im, double* u) const {
+  fftw_execute_split_dft_c2r(plans_->inverse_contact, re, im, u);
+}
+
+void BlockCirculantSolver::sweep(double* y_re, double* y_im) const {
+  if (p_ == 3)
+    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+  else
+    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+}
+
 void BlockCirculantSolver::solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const {
   assert(b.size() == size() && x.size() == size());
   double* spectrum_re = work_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
-  fftw_execute_split_dft_r2c(plans_->forward, const_cast<double*>(b.data()), spectrum_re, spectrum_im);
-  if (p_ == 3)
-    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
-  else
-    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
-  fftw_execute_split_dft_c2r(plans_->inverse, spectrum_re, spectrum_im, x.data());
+  forward(b.data(), spectrum_re, spectrum_im);
+  sweep(work_re_.data(), work_im_.data());
+  inverse(spectrum_re, spectrum_im, x.data());
 }
 
 Eigen::VectorXd BlockCirculantSolver::solve(const Eigen::VectorXd& b) const {

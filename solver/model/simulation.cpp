@@ -135,7 +135,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const HHTCoefficients hht(c.time.hht_alpha, m.d.dt);
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
   HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
-                     m.factorize(effective_matrix(hht, system)));
+                     m.factorize(effective_matrix(hht, system)),
+                     c.numerics.linear_solver == LinearSolverKind::spectral);
   const Eigen::MatrixXd W = stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
