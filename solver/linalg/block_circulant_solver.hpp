@@ -82,11 +82,11 @@ class BlockCirculantSolver : public SplitSolver {
  private:
   struct FftPlans;  // FFTW plans, kept out of this header
 
-  // The steps of a solve on given arrays (spectra: split real/imaginary, rows of lanes_ entries).
-  void forward(const double* b, double* re, double* im) const;           ///< all s rows
-  void inverse(double* re, double* im, double* x) const;                 ///< all s rows; destroys re, im
-  void forward_contact(const double* g, double* re, double* im) const;   ///< rows 0, 1 from 2 n_x values
-  void inverse_contact(double* re, double* im, double* u) const;         ///< rows 0, 1; destroys re, im
+  // The spectrum buffers, each with FFT plans of its own: work_ (solves), kept_ (the free solve's spectrum,
+  // split solve), contact_ (rows 0 and 1 only: the bottom row's 2 n_x values).
+  enum class Spectrum { work = 0, kept = 1, contact = 2 };
+  void transform(Spectrum spectrum, const double* b) const;  ///< b (real) -> the buffer's data rows
+  void inverse_transform(Spectrum spectrum, double* x) const;  ///< the buffer's data rows -> x; destroys them
   void sweep(double* y_re, double* y_im) const;  ///< y <- A^{-1} y / n_x on a padded (s + 2p)-row spectrum
   void prepare_split();                          ///< G and the split workspace (block_circulant_split.cpp)
 

@@ -10,11 +10,8 @@
 namespace slidewave {
 
 void BlockCirculantSolver::prepare_split() {
-  const std::size_t padded = static_cast<std::size_t>(s_ + 2 * p_) * lanes_, rows = static_cast<std::size_t>(s_) * lanes_;
-  kept_re_.assign(padded, 0.0);
-  kept_im_.assign(padded, 0.0);
-  contact_re_.assign(2 * static_cast<std::size_t>(lanes_), 0.0);
-  contact_im_.assign(contact_re_.size(), 0.0);
+  // kept_ and contact_ are allocated (and their FFT plans made) by the constructor.
+  const std::size_t rows = static_cast<std::size_t>(s_) * lanes_;
   // The DFT of a unit load at DOF b of slice 0 is e_b at every wavenumber; the sweeps turn it into
   // A(theta_m)^{-1} e_b / n_x, the same scaling as the spectrum of a solve.
   G_re_.assign(2 * rows, 0.0);
@@ -36,12 +33,12 @@ void BlockCirculantSolver::solve_free(const Eigen::Ref<const Eigen::VectorXd>& b
   assert(b.size() == size() && u_contact.size() == n_contact());
   double* X_re = kept_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* X_im = kept_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  forward(b.data(), X_re, X_im);
+  transform(Spectrum::kept, b.data());
   sweep(kept_re_.data(), kept_im_.data());
   // Rows 0 and 1 only, through a copy: the inverse transform destroys its input and X is kept.
   std::copy_n(X_re, contact_re_.size(), contact_re_.begin());
   std::copy_n(X_im, contact_im_.size(), contact_im_.begin());
-  inverse_contact(contact_re_.data(), contact_im_.data(), u_contact.data());
+  inverse_transform(Spectrum::contact, u_contact.data());
   kept_valid_ = true;
 }
 
@@ -50,7 +47,7 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
   if (!kept_valid_) throw std::logic_error("BlockCirculantSolver::solve_loaded: no solve_free() before it");
   double* X_re = kept_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* X_im = kept_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  forward_contact(g.data(), contact_re_.data(), contact_im_.data());
+  transform(Spectrum::contact, g.data());
   const double* R0_re = contact_re_.data();
   const double* R0_im = contact_im_.data();
   const double* R1_re = R0_re + lanes_;
@@ -69,7 +66,7 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
       X_im[k] += G0_re[k] * R0_im[m] + G0_im[k] * R0_re[m] + G1_re[k] * R1_im[m] + G1_im[k] * R1_re[m];
     }
   }
-  inverse(X_re, X_im, u.data());  // destroys X: one solve_loaded per solve_free
+  inverse_transform(Spectrum::kept, u.data());  // destroys X: one solve_loaded per solve_free
   kept_valid_ = false;
 }
 
