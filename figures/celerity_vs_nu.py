@@ -1,11 +1,14 @@
 #!/usr/bin/python3
-"""Slip-front celerity against Poisson's ratio, one colour per friction coefficient (paper Fig. 4b).
+"""Slip-front celerity against Poisson's ratio, one colour and marker per friction coefficient
+(paper Fig. 4b).
 
     figures/celerity_vs_nu.py table1.csv --out fig4b
 
 Reads the columns nu, f, celerity (regenerated, m/s, signed: + = sliding direction) and published
-(the paper's Table 1, m/s) of table1.csv; empty cells are skipped. Filled circles: regenerated;
-open circles: published; a thin line joins the two values of one cell. The upper panel shows the
+(the paper's Table 1, m/s) of table1.csv; empty cells are skipped. Each f has its own pair of
+colour (the qualitative tab palette of the other figures) and marker shape, named in the legend
+(a sequential colour map made the 14 f values of Table 1 near-identical shades). Filled marker:
+regenerated; open marker: published; a thin line joins the two values of one cell. The upper panel shows the
 fronts running in the sliding direction, the lower one those running against it (mirrored wave
 speeds -c_s, -sqrt2 c_s, -c_l). The wave-speed curves are analysis.theory's, for the paper's E and
 rho (1000 Pa, 1000 kg/m^3; --E, --rho).
@@ -14,7 +17,6 @@ import argparse
 import math
 
 import numpy as np
-from matplotlib.colors import BoundaryNorm
 from matplotlib.lines import Line2D
 
 import _style
@@ -22,6 +24,16 @@ from _data import InputError, read_csv, select
 from analysis import theory
 
 REQUIRED = ("nu", "f", "celerity", "published")
+# The qualitative palette of the other figures (convergence.py, pulse_spacing.py), then the rest of
+# tab10; every f also gets its own marker, so that colours repeating after ten stay apart.
+PALETTE = ["tab:red", "tab:blue", "tab:green", "tab:purple", "tab:orange", "tab:brown", "tab:olive",
+           "tab:cyan", "tab:pink", "tab:gray"]
+MARKERS = ["o", "s", "D", "^", "v", "P", "X", "h", "<", ">", "p", "*", "d", "8"]
+
+
+def styles_of(fs):
+    """{f: (colour, marker)}: distinct pairs, neighbouring f values in different colours."""
+    return {f: (PALETTE[i % len(PALETTE)], MARKERS[i % len(MARKERS)]) for i, f in enumerate(sorted(fs))}
 
 
 def parse_args(argv):
@@ -52,10 +64,7 @@ def main(argv=None):
     if not rows:
         raise InputError(f"{args.table}: no row with a regenerated or published celerity")
     fs = sorted({r["f"] for r in rows})
-    # One colour per friction coefficient, equally spaced whatever the f values.
-    cmap = _style.plt.get_cmap("viridis", len(fs))
-    norm = BoundaryNorm(np.arange(len(fs) + 1) - 0.5, cmap.N)
-    color_of = {f: cmap(norm(i)) for i, f in enumerate(fs)}
+    style_of = styles_of(fs)
 
     # 2. Two panels: c_p > 0 above, c_p < 0 below; the theory mirrored in the lower one.
     # Printed at 0.7 of the text width (4.5 in): 9 pt text prints at ~6.5 pt.
@@ -71,16 +80,16 @@ def main(argv=None):
 
     # 3. Data: published open, regenerated filled, joined per cell.
     for r in rows:
-        color = color_of[r["f"]]
+        color, marker = style_of[r["f"]]
         both = finite(r["celerity"]) and finite(r["published"])
         for ax in (up, down):
             if both:
                 ax.plot([r["nu"]] * 2, [r["published"], r["celerity"]], color=color, lw=0.8,
                         alpha=0.7)
             if finite(r["published"]):
-                ax.plot(r["nu"], r["published"], "o", mfc="none", mec=color, ms=7, mew=1.2)
+                ax.plot(r["nu"], r["published"], marker, mfc="none", mec=color, ms=7.5, mew=1.2)
             if finite(r["celerity"]):
-                ax.plot(r["nu"], r["celerity"], "o", color=color, ms=4.5)
+                ax.plot(r["nu"], r["celerity"], marker, color=color, ms=4.5)
 
     # 4. Limits from the data, legends, colour bar.
     values = [v for r in rows for v in (r["celerity"], r["published"]) if finite(v)]
@@ -92,19 +101,18 @@ def main(argv=None):
     down.set_ylabel("$c_p$ < 0: against sliding (m/s)")
     down.set_xlabel("Poisson's ratio $\\nu$ (-)")
     down.set_xlim(-0.02, nu[-1] + 0.01)
-    markers = [Line2D([], [], ls="none", marker="o", color="0.3", ms=4.5, label="regenerated"),
+    markers = [Line2D([], [], ls="none", marker="o", color="0.3", ms=4.5, label="regenerated (filled)"),
                Line2D([], [], ls="none", marker="o", mfc="none", mec="0.3", ms=7,
-                      label="published (Yastrebov 2016)")]
+                      label="published, Yastrebov 2016 (open)")]
     up.legend(handles=up.get_legend_handles_labels()[0] + markers, loc="upper left", ncol=2,
               fontsize=8, framealpha=0.9)
     down.legend(loc="lower left", fontsize=8, ncol=3, framealpha=0.9)
     for ax in (up, down):
         ax.grid(alpha=0.25)
-    bar = fig.colorbar(_style.plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=[up, down],
-                       ticks=range(len(fs)), fraction=0.04, pad=0.02)
-    bar.ax.set_yticklabels([f"{f:g}" for f in fs])
-    bar.set_label("friction coefficient $f$ (-)")
-    bar.ax.tick_params(labelsize=7)
+    per_f = [Line2D([], [], ls="none", marker=style_of[f][1], color=style_of[f][0], ms=5.5, label=f"{f:g}")
+             for f in fs]
+    fig.legend(handles=per_f, title="friction\ncoefficient $f$", loc="center left",
+               bbox_to_anchor=(0.91, 0.5), fontsize=8, title_fontsize=8, frameon=False, labelspacing=0.6)
     n_both = sum(finite(r["celerity"]) and finite(r["published"]) for r in rows)
     shared = _style.common_label(rows, skip=("nu", "f"))
     up.set_title(f"Slip-front celerity $c_p$: {n_both} cells with both values; wave speeds for "

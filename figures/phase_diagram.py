@@ -3,6 +3,7 @@
 
     figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --out fig4a
     figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --where elements_per_H=64 --out fig4a
+    figures/phase_diagram.py all_metrics.csv --flutter flutter.txt --published table1.csv --out fig4a
     figures/phase_diagram.py ensemble.csv --ensemble --flutter flutter.txt --out fig4a_ensemble
 
 One marker per run from the `category` column: open circle no opening, square intersonic opening
@@ -14,6 +15,12 @@ Each (nu, f) must appear once: restrict a mixed table with --where column=value.
 the input is `python3 -m analysis.ensemble`'s ensemble.csv: the marker is the cell's majority
 category over its seeds, and a cell whose seeds disagree is ringed in orange with its category
 agreement (fraction of the seeds in the majority category) written beside it.
+With --published table1.csv (`python3 -m analysis aggregate`) the paper's classification is laid
+over ours: every cell of the paper's Table 1 (an opening wave, Fig. 4a of the paper) gets an arrow
+on the left of our marker in its published direction (blue, pointing right: in the sliding
+direction; red, pointing left: against it; from the sign of the published celerity), and a black
+"not equal" sign on the right where the run's category differs from the published one
+(`category_match` false, or no run for the cell).
 """
 import argparse
 from collections import Counter
@@ -21,6 +28,7 @@ from collections import Counter
 import numpy as np
 from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
+from matplotlib.transforms import offset_copy
 
 import _style
 from _data import InputError, read_csv, read_flutter, select
@@ -28,6 +36,17 @@ from _data import InputError, read_csv, read_flutter, select
 REQUIRED = ("nu", "f", "category")
 ENSEMBLE_REQUIRED = ("nu", "f", "majority_category", "category_agreement", "n_runs")
 RING = dict(marker="o", mfc="none", mec="tab:orange", ms=13, mew=1.4)
+PUBLISHED_REQUIRED = ("nu", "f", "published", "category_match")
+# Beside our marker (offsets in points, so that close f values stay apart): an arrow in the published
+# direction on the left, a "not equal" sign on the right where our category differs.
+PUBLISHED_MARK = {
+    "forward": ("published: opening wave in the sliding direction",
+                dict(marker=">", mfc="tab:blue", mec="tab:blue", ms=6)),
+    "backward": ("published: opening wave against the sliding direction",
+                 dict(marker="<", mfc="tab:red", mec="tab:red", ms=6)),
+}
+PUBLISHED_OFFSET, DIFFERS_OFFSET = -10.0, 10.0  # points
+DIFFERS = dict(marker="$\\neq$", color="black", ms=8, mew=0.5)
 KNOWN = {
     "no_opening": ("no opening", [dict(marker="o", mfc="white", mec="0.3", ms=7, mew=1.0)]),
     "intersonic_opening": ("intersonic opening wave, sliding direction",
@@ -39,7 +58,7 @@ KNOWN = {
     "supersonic_backward_opening": ("supersonic opening wave against the sliding direction",
                                     [dict(marker="D", mfc="tab:red", mec="tab:red", ms=7)]),
 }
-OTHER_MARKERS = ["^", "v", "P", "X", "*", "h", "<", ">"]
+OTHER_MARKERS = ["^", "v", "P", "X", "*", "h", "p", "d"]  # not < >: the published arrows
 OTHER_COLORS = ["tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
 
 
@@ -54,6 +73,29 @@ def styles_for(categories):
     return styles
 
 
+def overlay_published(ax, cells):
+    """Arrows and "not equal" signs of the published cells; returns their legend handles and labels."""
+    beside = {dx: offset_copy(ax.transData, fig=ax.figure, x=dx, units="points")
+              for dx in (PUBLISHED_OFFSET, DIFFERS_OFFSET)}
+    handles, labels = [], []
+    for direction, (label, style) in PUBLISHED_MARK.items():
+        chosen = [c for c in cells if (c["published"] > 0) == (direction == "forward")]
+        if not chosen:
+            continue
+        ax.plot([c["nu"] for c in chosen], [c["f"] for c in chosen], ls="none", zorder=4,
+                transform=beside[PUBLISHED_OFFSET], **style)
+        handles.append(Line2D([], [], ls="none", **style))
+        labels.append(f"{label} ({len(chosen)})")
+    # category_match is empty (nan) when the cell has no run with a category: that differs too.
+    differs = [c for c in cells if c["category_match"] is not True]
+    if differs:
+        ax.plot([c["nu"] for c in differs], [c["f"] for c in differs], ls="none", zorder=5,
+                transform=beside[DIFFERS_OFFSET], **DIFFERS)
+        handles.append(Line2D([], [], ls="none", **DIFFERS))
+        labels.append(f"our category differs from the\npublished one ({len(differs)})")
+    return handles, labels
+
+
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("metrics", help="all_metrics.csv (one row per run)")
@@ -62,6 +104,9 @@ def parse_args(argv):
                         help="the input is ensemble.csv: majority category and category agreement")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
+    parser.add_argument("--published", metavar="TABLE1_CSV",
+                        help="table1.csv of `python3 -m analysis aggregate`: ring the paper's Table-1 "
+                             "cells by published direction, mark where our category differs")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
     return parser.parse_args(argv)
 
@@ -116,6 +161,11 @@ def main(argv=None):
     if args.ensemble:
         handles.append(Line2D([], [], ls="none", **RING))
         labels.append(f"seeds disagree ({len(split)} cells): fraction\nin the majority category")
+    # 3c. The paper's classification: a ring per published cell, "not equal" where ours differs.
+    if args.published:
+        handles_published, labels_published = overlay_published(ax, read_csv(args.published, PUBLISHED_REQUIRED))
+        handles += handles_published
+        labels += labels_published
     handles.append(Line2D([], [], color="k", ls="-.", lw=1.2))
     labels.append("flutter of steady sliding (theory):\nunstable inside the shaded wedge")
     ax.legend(handles, labels, handler_map={tuple: HandlerTuple(ndivide=1)}, loc="upper left",
@@ -123,7 +173,8 @@ def main(argv=None):
 
     # 4. Axes.
     nus = sorted({r["nu"] for r in rows})
-    ax.set_xlim(min(nus + [nu_w.min()]) - 0.02, max(nus + [nu_w.max()]) + 0.02)
+    margin = 0.045 if args.published else 0.02  # room for the published marks beside the end columns
+    ax.set_xlim(min(nus + [nu_w.min()]) - margin, max(nus + [nu_w.max()]) + margin)
     ax.set_ylim(f_lo, f_hi)
     ax.set_xticks(nus)
     ax.set_yticks(fs)

@@ -4,7 +4,7 @@ box beyond a few points runs into the margin or off the page), references or cit
 undefined, or a number of generated/numbers.tex left as a placeholder (\\notavailable, which only
 make_placeholders.py writes).
 
-    paper/check_latex_log.py paper/reproduction.log [--numbers paper/generated/numbers.tex] [--max-overfull-pt 3]
+    paper/check_latex_log.py paper/reproduction.log [--numbers paper/generated/numbers.tex ...] [--max-overfull-pt 3]
 
 Exit 0 when the log is clean, 1 with one line per problem otherwise (the rule `paper` and
 `make -C paper` run it after latexmk, so the build fails).
@@ -37,15 +37,17 @@ def problems(log: str, max_overfull_pt: float) -> list[str]:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("log", help="the .log of the final LaTeX run")
-    parser.add_argument("--numbers", help="generated/numbers.tex: none of its macros may be \\notavailable")
+    parser.add_argument("--numbers", action="append", default=[],
+                        help="generated/numbers.tex (repeatable: any file of generated macros): none of "
+                             "its macros may be \\notavailable")
     parser.add_argument("--max-overfull-pt", type=float, default=3.0)
     args = parser.parse_args(argv)
     try:
         with open(args.log, errors="replace") as stream:
             found = problems(stream.read(), args.max_overfull_pt)
-        if args.numbers:
-            with open(args.numbers) as stream:
-                found += [f"{args.numbers}: \\{name} is a placeholder (\\notavailable)" for name in
+        for numbers in args.numbers:
+            with open(numbers) as stream:
+                found += [f"{numbers}: \\{name} is a placeholder (\\notavailable)" for name in
                           re.findall(r"\\newcommand\{\\(\w+)\}\{\\notavailable\}", stream.read())]
     except OSError as err:
         print(f"check_latex_log.py: error: {err.filename}: cannot read ({err.strerror})", file=sys.stderr)

@@ -4,17 +4,17 @@ the report compiles before any run exists.
 
     paper/make_placeholders.py [--force] [--dir paper/generated]
 
-Writes numbers.tex (every macro \\notavailable) and table1.tex (an empty table) when absent, or
-always with --force. Figures need no placeholder: reproduction.tex draws a framed note in place
-of a generated/<name>.pdf that does not exist. Existing generated files are never touched without
---force.
+Writes numbers.tex and energy_evidence.tex (every macro \\notavailable) and table1.tex (an empty
+table) when absent, or always with --force. Figures need no placeholder: reproduction.tex draws a
+framed note in place of a generated/<name>.pdf that does not exist. Existing generated files are
+never touched without --force.
 """
 import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from numbers_tex import MACRO_NAMES, render  # noqa: E402
+from numbers_tex import ENERGY_MACRO_NAMES, MACRO_NAMES, render  # noqa: E402
 
 TABLE = """% Placeholder written by paper/make_placeholders.py: run make_table1.py on table1.csv.
 \\begin{tabular}{rrrrr}
@@ -40,7 +40,9 @@ def main(argv=None):
     placeholders = {name: r"\notavailable" for name in MACRO_NAMES}
     files = {"numbers.tex": "\\providecommand{\\notavailable}{\\textit{n/a}}\n"
                             + render(placeholders, ["nothing: placeholders"]),
-             "table1.tex": TABLE}
+             "table1.tex": TABLE,
+             "energy_evidence.tex": render({name: r"\notavailable" for name in ENERGY_MACRO_NAMES},
+                                           ["nothing: placeholders"], script="paper/make_energy_evidence.py")}
     for name, text in files.items():
         path = os.path.join(args.dir, name)
         if os.path.exists(path) and not args.force:

@@ -202,6 +202,11 @@ std::vector<ConfigKey> make_table() {
              "wall time between checkpoints (RUN.checkpoint.h5, which `slidewave run --resume` continues); "
              "0: only at SIGINT/SIGTERM; does not change the results",
              [](auto& c) -> auto& { return c.output.checkpoint_interval; }),
+      choice("output", "energy_decomposition", {{"none", false}, {"hht", true}},
+             "`hht`: also book the algorithmic dissipation of HHT term by term (/global/dissipation_hht*, "
+             "docs/energy-balance.md; a few dot products a step), which the balance residual must equal; "
+             "`none`: not written",
+             [](auto& c) -> auto& { return c.output.energy_decomposition; }),
   };
 }
 

@@ -53,6 +53,7 @@ struct OutputConfig {
   std::vector<double> snapshot_times;
   ProgressMode progress = ProgressMode::automatic;
   double checkpoint_interval = 300.0;  ///< wall-time seconds between checkpoints (0: only at SIGINT/SIGTERM)
+  bool energy_decomposition = false;   ///< also book the HHT algorithmic dissipation (/global/dissipation_hht*)
 };
 
 /// Constants that follow from the configuration, computed in one place (and written to run.h5).

@@ -35,6 +35,18 @@ inline const GlobalColumn kGlobalColumns[] = {
      {"J/m", "E_kin + E_el + D_fric + W_normal - E(0) - W_ext (HHT dissipation for alpha > 0)"}},
     {"contact_residual", &GlobalSeries::contact_residual, {"1", "last sweep's max reaction change / (p0 h)"}},
 };
+/// Written only with output.energy_decomposition = hht (docs/energy-balance.md).
+inline const GlobalColumn kHhtColumns[] = {
+    {"dissipation_hht", &GlobalSeries::dissipation_hht,
+     {"J/m", "HHT algorithmic dissipation since t = 0, the sum of the three terms below (= -energy_balance_residual "
+             "to round-off)"}},
+    {"dissipation_hht_gamma", &GlobalSeries::dissipation_hht_gamma,
+     {"J/m", "-sum dt (gamma - 1/2) <v>.M [a] (velocity update)"}},
+    {"dissipation_hht_beta", &GlobalSeries::dissipation_hht_beta,
+     {"J/m", "sum dt^2 (beta - gamma/2) [a].M <a> (displacement update)"}},
+    {"dissipation_hht_shift", &GlobalSeries::dissipation_hht_shift,
+     {"J/m", "-sum [u].<s>, s(n+1) = alpha K [u] - a' C^T [r] (alpha-shift of K u and of the contact forces)"}},
+};
 inline const DatasetText kIterationsText{"1", "Gauss-Seidel sweeps of the step"};
 
 struct InterfaceColumn {

@@ -134,6 +134,9 @@ struct RunWriter::Files {
 
 RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance)
     : path_(std::move(working_path)), files_(std::make_unique<Files>()) {
+  for (const auto& c : kGlobalColumns) global_columns_.push_back(&c);
+  if (config.output.energy_decomposition)
+    for (const auto& c : kHhtColumns) global_columns_.push_back(&c);
   h5::silence_errors();
   errno = 0;
   const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -170,8 +173,8 @@ void RunWriter::ensure_layout(const RunRecord& record) {
     series_[std::string("/interface/") + c.name] =
         Series::create<double>(files_->interface, c.name, n_contact_, c.text, path_);
   series_["/interface/state"] = Series::create<std::int8_t>(files_->interface, "state", n_contact_, kStateText, path_);
-  for (const auto& c : kGlobalColumns)
-    series_[std::string("/global/") + c.name] = Series::create<double>(files_->global, c.name, 0, c.text, path_);
+  for (const GlobalColumn* c : global_columns_)
+    series_[std::string("/global/") + c->name] = Series::create<double>(files_->global, c->name, 0, c->text, path_);
   series_["/global/contact_iterations"] =
       Series::create<int>(files_->global, "contact_iterations", 0, kIterationsText, path_);
 }
@@ -217,10 +220,14 @@ void RunWriter::drain(RunRecord& record) {
 
   auto& g = record.global;
   const std::int64_t n_global = static_cast<std::int64_t>(g.t.size());
-  for (const auto& c : kGlobalColumns) {
-    const std::string name = std::string("/global/") + c.name;
-    series_[name]->append((g.*c.values).data(), n_global, path_, name);
-    (g.*c.values).clear();
+  for (const GlobalColumn* c : global_columns_) {
+    const std::string name = std::string("/global/") + c->name;
+    std::vector<double>& values = g.*(c->values);
+    if (static_cast<std::int64_t>(values.size()) != n_global)
+      throw IoError(path_ + ": " + name + " has " + std::to_string(values.size()) + " rows, /global/t " +
+                    std::to_string(n_global) + " (internal error)");
+    series_[name]->append(values.data(), n_global, path_, name);
+    values.clear();
   }
   series_["/global/contact_iterations"]->append(g.contact_iterations.data(), n_global, path_,
                                                 "/global/contact_iterations");

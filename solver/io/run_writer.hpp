@@ -20,6 +20,7 @@
 #include "config/run_config.hpp"
 #include "io/output_path.hpp"  // partial_path_for
 #include "io/run_attributes.hpp"
+#include "io/run_layout.hpp"
 #include "model/run_record.hpp"
 
 namespace slidewave {
@@ -101,6 +102,9 @@ class RunWriter {
   std::size_t interface_block_rows_ = 256;
   RunRecord outline_;  ///< what the XDMF sidecars need: x, snapshot mesh and times, output times (at the end)
   int n_contact_ = 0;
+  /// The /global series of this run: run_layout::kGlobalColumns, plus kHhtColumns when
+  /// output.energy_decomposition asks for them.
+  std::vector<const run_layout::GlobalColumn*> global_columns_;
 };
 
 }  // namespace slidewave

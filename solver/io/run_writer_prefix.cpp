@@ -40,10 +40,10 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
     const std::int64_t block_rows = static_cast<std::int64_t>(kGlobalBlockRows);
     for (std::int64_t first = 0; first < position.n_global_rows; first += block_rows) {
       const std::int64_t n = std::min(block_rows, position.n_global_rows - first);
-      for (const auto& c : kGlobalColumns) {
-        auto& v = block.global.*c.values;
+      for (const GlobalColumn* c : global_columns_) {
+        auto& v = block.global.*(c->values);
         v.resize(n);
-        read_rows(std::string("/global/") + c.name, v.data(), first, n, 0);
+        read_rows(std::string("/global/") + c->name, v.data(), first, n, 0);
       }
       block.global.contact_iterations.resize(n);
       read_rows("/global/contact_iterations", block.global.contact_iterations.data(), first, n, 0);

@@ -6,15 +6,30 @@
 //     D_fric   = -sum 1/2 (R_t(n) + R_t(n+1)) du_x,   W_normal = -sum 1/2 (R_n(n) + R_n(n+1)) du_y,
 //     W_ext    =  sum 1/2 (F_top(n) + F_top(n+1)).du_top,  F_top = (K u + M a) on the top rows.
 // The contact work is booked with the trapezoid: the discrete energy identity of the trapezoidal rule
-// (exact at hht_alpha = 0, either weighting). For hht_alpha > 0 no exact identity exists; with "end"
-// weighting the booked residual can then be slightly positive (2e-6 of the energy scale measured at H/8),
-// with "alpha" weighting it stays negative (HHT dissipation).
+// (exact at hht_alpha = 0, either weighting).
+//
+// With output.energy_decomposition = hht the ledger also books, from the step's own quantities, the
+// three terms by which HHT departs from that identity (docs/energy-balance.md derives them):
+//     residual(n+1) - residual(n) = dt (gamma - 1/2) <v>.M [a] - dt^2 (beta - gamma/2) [a].M <a> + [u_f].<s>,
+//     s(n+1) = alpha (K [u])_f - a' C^T [r],  s(0) = 0,
+// with [x] = x(n+1) - x(n), <x> = (x(n) + x(n+1))/2, a' the weight of r(n) (alpha or 0). Their sum with
+// the opposite sign is the HHT dissipation, which must equal -residual to round-off.
 #include <Eigen/Dense>
 
 #include "model/layer_model.hpp"
 #include "time/hht_stepper.hpp"
 
 namespace slidewave {
+
+/// The HHT terms booked so far and what the next step needs of the current time (all empty/zero when
+/// output.energy_decomposition is none).
+struct HhtDissipation {
+  double gamma = 0, beta = 0, shift = 0;  ///< each term's dissipation since t = 0 (J/m)
+  Eigen::VectorXd v_f, acc_f, Ma_f, Ku_f;  ///< v, a, M_ff a, K u of the free rows at the current time
+  Eigen::VectorXd shift_f;                 ///< s at the current time (free rows)
+  double total() const { return gamma + beta + shift; }
+  bool on() const { return v_f.size() > 0; }
+};
 
 /// The running sums (a checkpoint saves them).
 struct EnergySums {
@@ -23,6 +38,7 @@ struct EnergySums {
   double dissipation_friction = 0;  ///< D_fric since t = 0 (J/m)
   double work_contact_normal = 0;   ///< W_normal since t = 0 (J/m)
   Eigen::VectorXd F_top;            ///< top reaction at the current time (N/m per DOF)
+  HhtDissipation hht;               ///< only with output.energy_decomposition = hht
 };
 
 class EnergyLedger {
@@ -32,7 +48,7 @@ class EnergyLedger {
 
   double kinetic(const HHTState& s) const;
   double elastic(const HHTState& s) const;
-  /// Sums at t = 0.
+  /// Sums at t = 0 (with the HHT terms when the configuration asks for them).
   EnergySums start(const HHTState& s) const;
   /// Books the step that ended in s, from u_previous and r_previous; du_contact = C (u - u_previous).
   void book_step(const HHTState& s, const Eigen::VectorXd& u_previous, const Eigen::VectorXd& r_previous,
@@ -41,9 +57,14 @@ class EnergyLedger {
   double balance_residual(double kinetic, double elastic, const EnergySums& sums) const;
 
  private:
+  void book_hht_terms(const HHTState& s, const Eigen::VectorXd& u_previous, const Eigen::VectorXd& r_previous,
+                      HhtDissipation& hht) const;
+
   const LayerModel& model_;
   Eigen::VectorXd M_fd_v_top_;  ///< M_fd v_top (constant)
   double kinetic_top_;          ///< v_top.M_top v_top (constant)
+  HHTCoefficients hht_;
+  double weight_previous_;      ///< a': weight of r(n) in the equation of motion of step n -> n+1
 };
 
 }  // namespace slidewave

@@ -18,6 +18,13 @@ void for_each_vector(State& loop, F&& visit) {
   visit("r", loop.dynamics.r);
   visit("F_top", loop.energy.F_top);
   visit("u_contact_start", loop.recording.u_contact_start);
+  if (loop.energy.hht.on()) {  // output.energy_decomposition = hht
+    visit("hht_v_f", loop.energy.hht.v_f);
+    visit("hht_acc_f", loop.energy.hht.acc_f);
+    visit("hht_Ma_f", loop.energy.hht.Ma_f);
+    visit("hht_Ku_f", loop.energy.hht.Ku_f);
+    visit("hht_shift_f", loop.energy.hht.shift_f);
+  }
 }
 
 /// The array `name` of one kind (a.reals or a.integers), which must hold `size` values for this model.
@@ -44,6 +51,7 @@ StateArrays to_arrays(const LoopState& loop) {
   a.reals["scalars"] = {loop.t_end, loop.energy.energy_start, loop.energy.work_external,
                         loop.energy.dissipation_friction, loop.energy.work_contact_normal,
                         loop.recording.t_first_opening};
+  if (loop.energy.hht.on()) a.reals["hht_terms"] = {loop.energy.hht.gamma, loop.energy.hht.beta, loop.energy.hht.shift};
   auto& contact = a.integers["contact"];
   for (const ContactState s : loop.contact) contact.push_back(static_cast<std::int64_t>(s));
   std::int64_t end_reason = -1;
@@ -67,6 +75,12 @@ void restore_from_arrays(const StateArrays& a, LoopState& loop) {
   loop.energy.dissipation_friction = scalars[3];
   loop.energy.work_contact_normal = scalars[4];
   loop.recording.t_first_opening = scalars[5];
+  if (loop.energy.hht.on()) {
+    const auto& terms = find_array(a.reals, "hht_terms", 3);
+    loop.energy.hht.gamma = terms[0];
+    loop.energy.hht.beta = terms[1];
+    loop.energy.hht.shift = terms[2];
+  }
   const auto& contact = find_array(a.integers, "contact", loop.contact.size());
   for (std::size_t k = 0; k < contact.size(); ++k) loop.contact[k] = static_cast<ContactState>(contact[k]);
   const auto& counters = find_array(a.integers, "counters", 3);

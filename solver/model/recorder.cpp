@@ -101,6 +101,12 @@ void Recorder::record_global(double t, const LoopState& loop, int contact_iterat
   g.dissipation_friction.push_back(e.dissipation_friction);
   g.work_contact_normal.push_back(e.work_contact_normal);
   g.energy_balance_residual.push_back(ledger_.balance_residual(e_kin, e_el, e));
+  if (e.hht.on()) {
+    g.dissipation_hht.push_back(e.hht.total());
+    g.dissipation_hht_gamma.push_back(e.hht.gamma);
+    g.dissipation_hht_beta.push_back(e.hht.beta);
+    g.dissipation_hht_shift.push_back(e.hht.shift);
+  }
   g.contact_iterations.push_back(contact_iterations);
   g.contact_residual.push_back(contact_residual);
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Recording and diagnostics of the dynamic stage: the one place that appends output rows (the layout of
 // run.h5, docs/contracts.md section 2). Called by the loop of model/simulation.cpp after every step:
-//   /global     every step: forces T, N, T/N, energies (model/energy_ledger.hpp), contact sweeps;
+//   /global     every step: forces T, N, T/N, energies (model/energy_ledger.hpp; the HHT terms when asked),
+//               contact sweeps;
 //   /interface  every output.interface_stride steps: slip velocity, slip, opening, tractions, states;
 //   /snapshots  the bulk fields at output.snapshot_times (the first step at or after each, within dt/2);
 // and it watches for the first opening of the interface (which drives time.stop_after_opening).

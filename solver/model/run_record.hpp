@@ -26,6 +26,9 @@ struct GlobalSeries {
   std::vector<double> t, T, N, T_over_N, energy_kinetic, energy_elastic, work_external,
       dissipation_friction, work_contact_normal, energy_balance_residual, contact_residual;
   std::vector<int> contact_iterations;
+  /// Only with output.energy_decomposition = hht (model/energy_ledger.hpp): the HHT algorithmic
+  /// dissipation, total and its three terms; empty otherwise.
+  std::vector<double> dissipation_hht, dissipation_hht_gamma, dissipation_hht_beta, dissipation_hht_shift;
 };
 
 struct Snapshot {

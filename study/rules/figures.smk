@@ -65,16 +65,19 @@ rule fig_snapshots:
 
 
 rule fig_phase_diagram:
-    """Fig. 4a: category of each (nu, f) with the theoretical flutter wedge."""
+    """Fig. 4a: category of each (nu, f) with the theoretical flutter wedge and the paper's
+    classification of its Table-1 cells laid over it."""
     input:
         script=figure_script("phase_diagram"),
         metrics="results/{sweep}/table/all_metrics.csv",
+        table="results/{sweep}/table/table1.csv",
         flutter="results/theory/flutter.txt",
     output: multiext("results/{sweep}/figures/phase_diagram", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/phase_diagram"
     log: "results/{sweep}/logs/fig_phase_diagram.log"
     shell:
-        "{PYTHON} {input.script} {input.metrics} --flutter {input.flutter} --out {params.prefix} > {log} 2>&1"
+        "{PYTHON} {input.script} {input.metrics} --flutter {input.flutter} --published {input.table}"
+        " --out {params.prefix} > {log} 2>&1"
 
 
 rule fig_celerity_vs_nu:

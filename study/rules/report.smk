@@ -1,6 +1,7 @@
 # Study reports (our own HTML: Snakemake 7.21's --report needs internet) and the LaTeX paper.
 
-localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper
+localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper, energy_evidence_config,
+    paper_energy_evidence
 
 
 def report_inputs(sweeps):
@@ -124,6 +125,53 @@ rule paper_variants:
     shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
 
 
+ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of paper/make_energy_evidence.py
+
+
+def energy_evidence_config(name):
+    """Solver config of one energy-evidence run: config `paper.energy_evidence`, the run's keys over `base`."""
+    def merged(base, over):
+        out = dict(base)
+        for key, value in over.items():
+            out[key] = merged(out.get(key, {}), value) if isinstance(value, dict) else value
+        return out
+    spec = config["paper"]["energy_evidence"]
+    return merged(spec["base"], spec["runs"][name])
+
+
+rule energy_evidence_config:
+    """The solver configuration of one run of config `paper.energy_evidence`."""
+    output: "results/energy_evidence/{name}.json"
+    wildcard_constraints: name="|".join(ENERGY_RUNS)
+    params: text=lambda wc: json.dumps(energy_evidence_config(wc.name), sort_keys=True)
+    shell: "printf '%s\\n' {params.text:q} > {output}"
+
+
+rule energy_evidence_run:
+    """`slidewave run` of one energy-evidence run (H/32, a few seconds)."""
+    input:
+        config="results/energy_evidence/{name}.json",
+        solver=SOLVER,
+    output: "results/energy_evidence/{name}.h5"
+    wildcard_constraints: name="|".join(ENERGY_RUNS)
+    log: "results/energy_evidence/logs/{name}.log"
+    threads: 1
+    resources: mem_mb=1000, runtime=10
+    shell: "{input.solver} run {input.config} -o {output} --threads 1 > {log} 2>&1"
+
+
+rule paper_energy_evidence:
+    """The energy-balance evidence of the report (paper/make_energy_evidence.py): residual at alpha = 0,
+    residual against the HHT dissipation measured term by term at the study's alpha."""
+    input:
+        script="paper/make_energy_evidence.py",
+        runs=expand("results/energy_evidence/{name}.h5", name=ENERGY_RUNS),
+    output: "paper/generated/energy_evidence.tex"
+    params: runs=lambda wc, input: " ".join(f"--{name.replace('_', '-')} {path}" for name, path in zip(ENERGY_RUNS, input.runs))
+    log: "logs/paper_energy_evidence.log"
+    shell: "{PYTHON} {input.script} {params.runs} -o {output} > {log} 2>&1"
+
+
 def paper_table_job(name):
     """How `paper/generated/<name>.tex` is made (config `paper.tables`): the script, the table file
     each sweep contributes, the script's options, and the [(label, sweep)] sets."""
@@ -157,13 +205,14 @@ rule paper:
     """The LaTeX reproduction report (paper/reproduction.tex): every number, table and figure from
     generated files. Built in the checkout (paper/ is not copied under --directory). Fails (and
     leaves no PDF) on content wider than the text, an undefined reference or a placeholder number
-    (paper/check_latex_log.py)."""
+    of numbers.tex or energy_evidence.tex (paper/check_latex_log.py)."""
     input:
         tex="paper/reproduction.tex",
         check="paper/check_latex_log.py",
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
         variants="paper/generated/variants.tex",
+        energy="paper/generated/energy_evidence.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
         how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk
@@ -171,4 +220,5 @@ rule paper:
     log: "logs/paper.log"
     shell:
         "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex}"
-        " && {PYTHON} {input.check} paper/reproduction.log --numbers {input.numbers}) > {log} 2>&1"
+        " && {PYTHON} {input.check} paper/reproduction.log --numbers {input.numbers} --numbers {input.energy})"
+        " > {log} 2>&1"

@@ -52,8 +52,11 @@ CAPTIONS = {
     "spacetime_opening": "Opening of the interface in space and time, with the slopes of c_l, c_s and the measured c_p",
     "spacetime_state": "Stick, slip and open zones of the interface in space and time",
     "snapshots": "Material velocity in the deformed layer, slip velocity and opening along the interface at successive times",
-    "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding",
-    "celerity_vs_nu": "Slip-front celerity against nu, regenerated and published, with c_s, sqrt(2) c_s and c_l",
+    "phase_diagram": "Categories of the runs in the (nu, f) plane with the flutter wedge of steady sliding, and the "
+                     "paper's Table-1 cells (arrow: direction of the published opening wave; not-equal sign: our "
+                     "category differs)",
+    "celerity_vs_nu": "Slip-front celerity against nu, regenerated (filled) and published (open), one colour and "
+                      "marker per f, with c_s, sqrt(2) c_s and c_l",
     "deviation_map": "Deviation of the regenerated celerity from the published one for each published cell (framed: reproduced; crossed: another category than published)",
     "tn_curves": "Global friction ratio T/N against time",
     "tn_aligned": "T/N against the time since the start of each run's first frictional drop (x: the run stopped during the drop)",
@@ -216,7 +219,10 @@ def runs_html(runs: list[dict]) -> str:
                    f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
     out.append("</table></div>")
     out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
-               "the run. Wall time and memory: Snakemake's benchmark of the solver.</p>")
+               "the run; with hht_alpha &gt; 0 it is the algorithmic dissipation of HHT (measured term by "
+               "term against the residual in paper/reproduction.pdf, &ldquo;What the energy residual is&rdquo;; "
+               "docs/energy-balance.md). "
+               "Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")
     return "\n".join(out)
 

@@ -14,7 +14,7 @@ from figure_support import call, report_jobs  # noqa: E402
 @pytest.fixture(scope="session")
 def data(tmp_path_factory):
     """Folder with run.h5, run_v1e-06.h5, run_v0.0001.h5, all_metrics.csv, table1.csv,
-    flutter.txt, metrics.json, summary.json."""
+    flutter.txt, metrics.json, summary.json, energy_{alpha_zero,alpha,alpha_end}.h5."""
     return synthetic.write_all(tmp_path_factory.mktemp("synthetic"))
 
 

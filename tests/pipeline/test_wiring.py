@@ -73,6 +73,8 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     assert counts["aggregate"] == len(SIMULATIONS) and counts["aggregate_study"] == 1
     assert counts["paper_figure"] == 22 and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == 8
+    # What the energy residual is: three small runs with the HHT dissipation booked, one generator.
+    assert counts["energy_evidence_run"] == 3 and counts["paper_energy_evidence"] == 1
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
     assert counts["ensemble_table"] == 1 and counts["fig_phase_diagram_ensemble"] == 1
     assert counts["envelope"] == 1 and counts["fig_envelope"] == 1 and counts["paper_how_sure"] == 1
