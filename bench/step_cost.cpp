@@ -1,12 +1,17 @@
 // Per-step cost of slidewave runs: split into predictor, free solve, contact, correction,
-// diagnostics and output (with --stream), steps/s, and the ratio of one step to one CHOLMOD solve on
-// the same factor.
-// A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2] [--t-end 1300]
-//                                      [--nu 0.2] [--f 1.5] [--solver circulant|cholmod]
+// diagnostics and output (with --stream), steps/s, the ratio of one step to one K_eff solve with the
+// run's solver (step/slv, the machine-independent figure), and the peak resident memory of the process
+// so far (getrusage; run one case per process for the peak of that case alone).
+// On the spectral path the "free solve" is the forward half (FFT, sweeps, contact rows) and the
+// "correction" the loaded half plus the Newmark update.
+// A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2 4 6] [--t-end 1300]
+//                                      [--nu 0.2] [--f 1.5] [--solver circulant|spectral|cholmod]
 //                                      [--stream FOLDER [--checkpoint-interval S]]
 // --stream writes the run as `slidewave run` does (RUN.partial.h5 streamed, checkpoints every S s of
 // wall time, RUN.h5 put in place; io/run_session.hpp) into FOLDER/bench_H<n>.h5, so that ms/step
 // includes the output; without it nothing is written (the rows stay in memory).
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +48,25 @@ double one_solve_seconds(const slidewave::LayerModel& model) {
   return seconds_since(start) / repeats;
 }
 
+/// Average wall time of the sparse product K u (all DOFs) that the correction does once per step.
+double stiffness_product_seconds(const slidewave::LayerModel& model) {
+  Eigen::VectorXd u = Eigen::VectorXd::Ones(model.K.cols()), Ku(model.K.rows());
+  const int repeats = 200;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < repeats; ++i) {
+    Ku.noalias() = model.K * u;
+    u(i % u.size()) += Ku(0) * 1e-300;  // keeps the product from being hoisted
+  }
+  return seconds_since(start) / repeats;
+}
+
+/// Peak resident set size of this process so far (MB).
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // kB on Linux
+}
+
 /// Forwards to the run session and adds up the wall time spent in it: the cost of the output (rows
 /// drained to RUN.partial.h5, checkpoints, the final close and rename), measured apart from the step.
 class TimedObserver : public slidewave::RunObserver {
@@ -68,16 +92,18 @@ class TimedObserver : public slidewave::RunObserver {
 
 int main(int argc, char** argv) {
   std::vector<int> resolutions;
-  double lambda_over_H = 2, t_end = 1300, nu = 0.2, f = 1.5;
+  std::vector<double> lambdas;
+  double t_end = 1300, nu = 0.2, f = 1.5;
   auto solver = slidewave::LinearSolverKind::circulant;
+  std::string solver_name = "circulant";
   std::string stream_folder;
   double checkpoint_interval = 300;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
       while (i + 1 < argc && argv[i + 1][0] != '-') resolutions.push_back(std::atoi(argv[++i]));
-    } else if (a == "--lambda" && i + 1 < argc) {
-      lambda_over_H = std::atof(argv[++i]);
+    } else if (a == "--lambda") {
+      while (i + 1 < argc && argv[i + 1][0] != '-') lambdas.push_back(std::atof(argv[++i]));
     } else if (a == "--t-end" && i + 1 < argc) {
       t_end = std::atof(argv[++i]);
     } else if (a == "--nu" && i + 1 < argc) {
@@ -88,23 +114,27 @@ int main(int argc, char** argv) {
       stream_folder = argv[++i];
     } else if (a == "--checkpoint-interval" && i + 1 < argc) {
       checkpoint_interval = std::atof(argv[++i]);
-    } else if (a == "--solver" && i + 1 < argc) {
-      const std::string kind = argv[++i];
-      solver = kind == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::circulant;
+    } else if (a == "--solver" && i + 1 < argc && (solver_name = argv[++i], solver_name == "circulant" ||
+                                                   solver_name == "spectral" || solver_name == "cholmod")) {
+      solver = solver_name == "cholmod"    ? slidewave::LinearSolverKind::cholmod
+               : solver_name == "spectral" ? slidewave::LinearSolverKind::spectral
+                                           : slidewave::LinearSolverKind::circulant;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L] [--t-end T] [--nu NU] [--f F] [--solver circulant|cholmod] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
+  if (lambdas.empty()) lambdas = {2};
 
-  std::printf("# nu=%g f=%g lambda/H=%g, t_end=%g s (stage 3), linear solver %s, one core, output %s\n", nu, f,
-              lambda_over_H, t_end, solver == slidewave::LinearSolverKind::cholmod ? "cholmod" : "circulant",
+  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, one core, output %s\n", nu, f, t_end,
+              solver_name.c_str(),
               stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
                                                              std::to_string(checkpoint_interval) + " s").c_str());
-  std::printf("%6s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s\n", "H/h", "n_dofs", "steps", "predict",
-              "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s", "1solve_ms", "step/slv",
-              "setup_s");
+  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %8s %8s\n", "H/h", "lam/H", "n_dofs",
+              "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s",
+              "1solve_ms", "Ku_ms", "step/slv", "setup_s", "peak_MB");
+  for (double lambda_over_H : lambdas)
   for (int n : resolutions) {
     slidewave::RunConfig config;
     config.mesh.elements_per_H = n;
@@ -130,10 +160,10 @@ int main(int argc, char** argv) {
     const double per_step = (total - profile.setup) / profile.steps;
     const double solve = one_solve_seconds(model);
     const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
-    std::printf("%6d %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.2f %8.2f\n", n,
-                model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
+    std::printf("%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %8.2f %8.1f\n", n,
+                lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
                 ms(profile.correction), ms(profile.diagnostics), ms(output_seconds), 1e3 * per_step, 1 / per_step,
-                1e3 * solve, per_step / solve, profile.setup);
+                1e3 * solve, 1e3 * stiffness_product_seconds(model), per_step / solve, profile.setup, peak_rss_mb());
     std::fflush(stdout);
   }
   return 0;

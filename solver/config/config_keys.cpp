@@ -176,10 +176,13 @@ std::vector<ConfigKey> make_table() {
               [](auto& c) -> auto& { return c.perturbation.seed; }),
 
       choice("numerics", "linear_solver",
-             {{"circulant", LinearSolverKind::circulant}, {"cholmod", LinearSolverKind::cholmod}},
-             "`circulant` (FFT in x, exact for this uniform periodic mesh) or `cholmod` (general sparse "
-             "Cholesky, the oracle); both give the same discrete solution to round-off, which this chaotic "
-             "problem amplifies after slip onset",
+             {{"circulant", LinearSolverKind::circulant},
+              {"cholmod", LinearSolverKind::cholmod},
+              {"spectral", LinearSolverKind::spectral}},
+             "`circulant` (FFT in x, exact for this uniform periodic mesh), `cholmod` (general sparse "
+             "Cholesky, the oracle) or `spectral` (circulant with the free solve and the correction sharing "
+             "one spectrum: one K_eff pass per step); all give the same discrete solution to round-off, which "
+             "this chaotic problem amplifies after slip onset",
              [](auto& c) -> auto& { return c.numerics.linear_solver; }),
       integer("numerics", "threads", 1, 256,
               "threads of the BLAS/OpenMP under CHOLMOD (the circulant path is serial); `slidewave run "

@@ -15,7 +15,7 @@ enum class MassKind { consistent, lumped };
 enum class ContactWeighting { alpha, end };
 enum class Regularization { none, prakash_clifton };
 enum class ProgressMode { automatic, always, never };
-enum class LinearSolverKind { circulant, cholmod };
+enum class LinearSolverKind { circulant, cholmod, spectral };
 
 struct MaterialConfig { double E = 1000.0, nu = 0.2, rho = 1000.0; };
 struct GeometryConfig { double H = 25.0, lambda_over_H = 2.0; };
@@ -43,7 +43,8 @@ struct TimeConfig {
 struct ContactConfig { double tolerance = 1e-10; int max_iterations = 2000; };
 struct PerturbationConfig { double amplitude = 1e-5; long long seed = 1; };
 struct NumericsConfig {
-  /// circulant: FFT in x (exact for the uniform periodic mesh, ~20x faster); cholmod: general sparse path
+  /// circulant: FFT in x (exact for the uniform periodic mesh, ~20x faster); cholmod: general sparse path;
+  /// spectral: circulant with one K_eff pass per step (free solve and correction share one spectrum)
   LinearSolverKind linear_solver = LinearSolverKind::circulant;
   int threads = 1;  ///< BLAS/OpenMP threads under CHOLMOD (`run --threads` overrides it)
 };

@@ -29,4 +29,12 @@ Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_cont
   return 0.5 * (W + W.transpose());
 }
 
+Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W) {
+  const Eigen::Index n_c = W.rows();
+  Eigen::MatrixXd C(2 * n_c, 2);
+  C.topRows(n_c) = W.leftCols<2>();
+  C.bottomRows(n_c) = W.leftCols<2>();
+  return C;
+}
+
 }  // namespace slidewave

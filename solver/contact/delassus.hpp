@@ -19,4 +19,11 @@ Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs)
 /// Equal to delassus_operator() to round-off (tested).
 Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_contact_nodes);
 
+/// The two columns of node 0 of a block-circulant W (as delassus_operator_periodic makes it, symmetrized
+/// and still exactly block-circulant), stacked twice: a 4n x 2 matrix C with
+///     W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n),
+/// the same numbers bit for bit, in 2n x 2 storage instead of 2n x 2n (what the Gauss–Seidel sweeps
+/// read for their in-place updates, contact/gauss_seidel.hpp).
+Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
+
 }  // namespace slidewave

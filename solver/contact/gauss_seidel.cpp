@@ -7,12 +7,24 @@ namespace slidewave {
 
 namespace {
 
+/// y += W(:, 2k..2k+1) delta with W's columns read from delassus_periodic_columns(W): the same products
+/// and sums, in the same order per entry, as Eigen's y += W.middleCols<2>(2k) * delta.
+void add_periodic_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, const Eigen::Vector2d& delta,
+                          Eigen::VectorXd& y) {
+  const Eigen::Index n_c = 2 * n_nodes, start = 2 * ((n_nodes - k) % n_nodes);
+  const double* __restrict c0 = columns.data() + start;
+  const double* __restrict c1 = columns.data() + columns.rows() + start;
+  double* __restrict out = y.data();
+  const double d0 = delta.x(), d1 = delta.y();
+  for (Eigen::Index i = 0; i < n_c; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
+}
+
 /// One pass of at most settings.max_iterations sweeps from the r passed in, each node's reaction moved
 /// by `relaxation` times the change of its exact local solve.
 GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                         const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                         double relaxation, Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                        std::vector<ContactState>& state) {
+                                        std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
   const int n_nodes = static_cast<int>(q.size() / 2);
   state.assign(n_nodes, ContactState::open);
   y = q + W * r;
@@ -46,7 +58,10 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
         // relaxation 1 assigns local.r itself (r_old + change may differ from it in the last bit)
         const Eigen::Vector2d delta = relaxation == 1 ? change : Eigen::Vector2d(relaxation * change);
         r.segment<2>(2 * k) = relaxation == 1 ? local.r : Eigen::Vector2d(r_old + delta);
-        y.noalias() += W.middleCols<2>(2 * k) * delta;
+        if (periodic_columns)
+          add_periodic_columns(*periodic_columns, n_nodes, k, delta, y);
+        else
+          y.noalias() += W.middleCols<2>(2 * k) * delta;
         max_change = std::max(max_change, change.cwiseAbs().maxCoeff());
       }
     }
@@ -77,13 +92,14 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                             std::vector<ContactState>& state) {
+                                             std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
   const Eigen::VectorXd r_start = r;
-  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state);
+  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state, periodic_columns);
   if (plain.converged) return plain;
   // Plain sweeps cycled (or are too slow): restart from the warm start, under-relaxed.
   r = r_start;
-  GaussSeidelReport relaxed = sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state);
+  GaussSeidelReport relaxed =
+      sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state, periodic_columns);
   relaxed.iterations += plain.iterations;
   return relaxed;
 }

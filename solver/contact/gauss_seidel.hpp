@@ -3,7 +3,8 @@
 //     y = q + W r,   node k: y_k = (du_x, u_y)_k, r_k = (r_x, r_y)_k  (layout 2k: x, 2k+1: y),
 // with the local Signorini–Coulomb law of coulomb_local.hpp at every node. Each sweep solves every
 // node exactly with the others frozen; y is updated in place (two columns of W per node), so a sweep
-// costs O(n^2). Warm-started from the r passed in.
+// costs O(n^2) (O(n) memory traffic when W is block-circulant and its two generating columns are
+// passed: they fit in the cache where W does not). Warm-started from the r passed in.
 // Convergence: max_k |r_k(new) - r_k(old)| <= tolerance * force_scale over one sweep.
 //
 // Prakash–Clifton bounds (a given bound g_k per closed node) make the local law discontinuous at
@@ -70,9 +71,13 @@ struct GaussSeidelSettings {
 /// @param r      in: warm start; out: reactions
 /// @param y      out: local variables q + W r
 /// @param state  out: per-node contact state
+/// @param periodic_columns  null, or delassus_periodic_columns(W) when W is block-circulant: the in-place
+///               updates of y then read W's columns from it (the same numbers and operations, so the same
+///               result bit for bit, without streaming all of W through the cache on every sweep)
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                             std::vector<ContactState>& state);
+                                             std::vector<ContactState>& state,
+                                             const Eigen::MatrixXd* periodic_columns = nullptr);
 
 }  // namespace slidewave

@@ -132,11 +132,15 @@ std::mutex& planner_mutex() {
 }  // namespace
 
 struct BlockCirculantSolver::FftPlans {
-  fftw_plan forward = nullptr, inverse = nullptr;
+  // Per spectrum buffer (index Spectrum): its r2c and c2r plans and its data rows (real, imaginary).
+  fftw_plan forward[3] = {}, inverse[3] = {};
+  double *re[3] = {}, *im[3] = {};
   ~FftPlans() {
     std::lock_guard<std::mutex> lock(planner_mutex());
-    if (forward) fftw_destroy_plan(forward);
-    if (inverse) fftw_destroy_plan(inverse);
+    for (int k = 0; k < 3; ++k) {
+      if (forward[k]) fftw_destroy_plan(forward[k]);
+      if (inverse[k]) fftw_destroy_plan(inverse[k]);
+    }
   }
 };
 
@@ -203,26 +207,47 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   //    (j, d); the spectrum is written split (real, imaginary) with m fastest, row r = 2 j + d.
   work_re_.assign(static_cast<std::size_t>(s + 2 * p) * lanes, 0.0);
   work_im_.assign(work_re_.size(), 0.0);
-  double* spectrum_re = work_re_.data() + static_cast<std::size_t>(p) * lanes;
-  double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p) * lanes;
+  kept_re_.assign(work_re_.size(), 0.0);
+  kept_im_.assign(work_re_.size(), 0.0);
+  contact_re_.assign(2 * static_cast<std::size_t>(lanes), 0.0);
+  contact_im_.assign(contact_re_.size(), 0.0);
   plans_ = std::make_unique<FftPlans>();
+  const int work = static_cast<int>(Spectrum::work), kept = static_cast<int>(Spectrum::kept),
+            contact = static_cast<int>(Spectrum::contact);
+  plans_->re[work] = work_re_.data() + static_cast<std::size_t>(p) * lanes;
+  plans_->im[work] = work_im_.data() + static_cast<std::size_t>(p) * lanes;
+  plans_->re[kept] = kept_re_.data() + static_cast<std::size_t>(p) * lanes;
+  plans_->im[kept] = kept_im_.data() + static_cast<std::size_t>(p) * lanes;
+  plans_->re[contact] = contact_re_.data();
+  plans_->im[contact] = contact_im_.data();
   std::vector<double> data(static_cast<std::size_t>(size()), 0.0);
-  // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED. ESTIMATE
-  // and NO_SIMD make the plan a function of the sizes alone: no timing, no dependence on the CPU's vector
-  // extensions (FFTW's real-data codelets are scalar for the sizes here, so this costs little).
+  // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED. The split
+  // spectra are always the arrays of the plan: FFTW's new-array execution needs the same offset between
+  // the real and imaginary arrays as at planning (FFTW manual, sec. 4.6), so each spectrum buffer has
+  // plans of its own. ESTIMATE and NO_SIMD make the plan a function of the sizes alone: no timing, no
+  // dependence on the CPU's vector extensions (FFTW's real-data codelets are scalar for the sizes here,
+  // so this costs little).
   const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED | FFTW_NO_SIMD;
   {
     std::lock_guard<std::mutex> lock(planner_mutex());
     const fftw_iodim forward_dim{n_x, 2, 1};
     const fftw_iodim forward_loops[2] = {{n_y, 2 * n_x, 2 * lanes}, {2, 1, lanes}};
-    plans_->forward = fftw_plan_guru_split_dft_r2c(1, &forward_dim, 2, forward_loops, data.data(), spectrum_re,
-                                                   spectrum_im, flags);
     const fftw_iodim inverse_dim{n_x, 1, 2};
     const fftw_iodim inverse_loops[2] = {{n_y, 2 * lanes, 2 * n_x}, {2, lanes, 1}};
-    plans_->inverse = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 2, inverse_loops, spectrum_re, spectrum_im,
-                                                   data.data(), flags);
+    // All s rows (work: the solves; kept: the split solve), or the bottom row only (j = 0: loads and
+    // displacements 2 i + d), the last loop of each.
+    for (int k : {work, kept, contact}) {
+      const int rank = k == contact ? 1 : 2;
+      const fftw_iodim* f_loops = k == contact ? forward_loops + 1 : forward_loops;
+      const fftw_iodim* i_loops = k == contact ? inverse_loops + 1 : inverse_loops;
+      plans_->forward[k] = fftw_plan_guru_split_dft_r2c(1, &forward_dim, rank, f_loops, data.data(), plans_->re[k],
+                                                        plans_->im[k], flags);
+      plans_->inverse[k] = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, rank, i_loops, plans_->re[k],
+                                                        plans_->im[k], data.data(), flags);
+      if (!plans_->forward[k] || !plans_->inverse[k]) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+    }
   }
-  if (!plans_->forward || !plans_->inverse) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+  prepare_split();
 }
 
 BlockCirculantSolver::~BlockCirculantSolver() = default;
@@ -230,7 +255,9 @@ BlockCirculantSolver::BlockCirculantSolver(BlockCirculantSolver&&) noexcept = de
 BlockCirculantSolver& BlockCirculantSolver::operator=(BlockCirculantSolver&&) noexcept = default;
 
 std::size_t BlockCirculantSolver::memory_bytes() const {
-  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size());
+  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size() +
+                           G_re_.size() + G_im_.size() + kept_re_.size() + kept_im_.size() + contact_re_.size() +
+                           contact_im_.size());
 }
 
 namespace {
@@ -280,17 +307,29 @@ void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_r
 
 }  // namespace
 
+void BlockCirculantSolver::transform(Spectrum spectrum, const double* b) const {
+  const int k = static_cast<int>(spectrum);
+  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
+  fftw_execute_split_dft_r2c(plans_->forward[k], const_cast<double*>(b), plans_->re[k], plans_->im[k]);
+}
+
+void BlockCirculantSolver::inverse_transform(Spectrum spectrum, double* x) const {
+  const int k = static_cast<int>(spectrum);
+  fftw_execute_split_dft_c2r(plans_->inverse[k], plans_->re[k], plans_->im[k], x);
+}
+
+void BlockCirculantSolver::sweep(double* y_re, double* y_im) const {
+  if (p_ == 3)
+    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+  else
+    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+}
+
 void BlockCirculantSolver::solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const {
   assert(b.size() == size() && x.size() == size());
-  double* spectrum_re = work_re_.data() + static_cast<std::size_t>(p_) * lanes_;
-  double* spectrum_im = work_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
-  fftw_execute_split_dft_r2c(plans_->forward, const_cast<double*>(b.data()), spectrum_re, spectrum_im);
-  if (p_ == 3)
-    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
-  else
-    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), work_re_.data(), work_im_.data());
-  fftw_execute_split_dft_c2r(plans_->inverse, spectrum_re, spectrum_im, x.data());
+  transform(Spectrum::work, b.data());
+  sweep(work_re_.data(), work_im_.data());
+  inverse_transform(Spectrum::work, x.data());
 }
 
 Eigen::VectorXd BlockCirculantSolver::solve(const Eigen::VectorXd& b) const {

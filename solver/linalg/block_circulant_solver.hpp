@@ -20,6 +20,12 @@
 // the oracle in the tests). Slices must agree to 1e-12 relative (the check in the constructor); the
 // blocks of slice 0 are the ones factorized.
 //
+// Split solve (linalg/split_solver.hpp), for a step with contact forces on the bottom row (slice rows r = 0,
+// 1, the first 2 n_x DOFs): the response to them is, per wavenumber, G_m = A(theta_m)^{-1} E (E the unit
+// columns at local rows 0 and 1, precomputed; the 1/n_x is folded in as in inv_D), times the DFT R_m of
+// the 2 x n_x loads. solve_free() keeps the spectrum X_m of the free solve and inverse-transforms only rows
+// 0 and 1; solve_loaded() adds G_m R_m and inverse-transforms all rows once: about one solve for both.
+//
 // Thread safety: solve() writes a mutable workspace, so one object must not be used by two threads at
 // once; build one solver per thread. Construction (FFTW planning) is serialized internally.
 //
@@ -32,11 +38,11 @@
 #include <string>
 #include <vector>
 
-#include "linalg/linear_solver.hpp"
+#include "linalg/split_solver.hpp"
 
 namespace slidewave {
 
-class BlockCirculantSolver : public LinearSolver {
+class BlockCirculantSolver : public SplitSolver {
  public:
   /// Checks the structure (std::invalid_argument with the first mismatch if A is not square of size
   /// 2 n_x n_y, symmetric and block-circulant with nearest-neighbour coupling; n_x >= 3, n_y >= 1) and
@@ -57,6 +63,10 @@ class BlockCirculantSolver : public LinearSolver {
   void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const override;
 
   int size() const override { return 2 * n_x_ * n_y_; }
+  /// The bottom row of the mesh (j = 0): 2 n_x DOFs.
+  int n_contact() const override { return 2 * n_x_; }
+  void solve_free(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> u_contact) override;
+  void solve_loaded(const Eigen::Ref<const Eigen::VectorXd>& g, Eigen::Ref<Eigen::VectorXd> u) override;
   int n_x() const { return n_x_; }
   int n_y() const { return n_y_; }
   /// Half-bandwidth p of the blocks in the slice ordering r = 2 j + d.
@@ -72,6 +82,14 @@ class BlockCirculantSolver : public LinearSolver {
  private:
   struct FftPlans;  // FFTW plans, kept out of this header
 
+  // The spectrum buffers, each with FFT plans of its own: work_ (solves), kept_ (the free solve's spectrum,
+  // split solve), contact_ (rows 0 and 1 only: the bottom row's 2 n_x values).
+  enum class Spectrum { work = 0, kept = 1, contact = 2 };
+  void transform(Spectrum spectrum, const double* b) const;  ///< b (real) -> the buffer's data rows
+  void inverse_transform(Spectrum spectrum, double* x) const;  ///< the buffer's data rows -> x; destroys them
+  void sweep(double* y_re, double* y_im) const;  ///< y <- A^{-1} y / n_x on a padded (s + 2p)-row spectrum
+  void prepare_split();                          ///< G and the split workspace (block_circulant_split.cpp)
+
   int n_x_, n_y_;
   int s_;        ///< slice size 2 n_y
   int p_;        ///< half-bandwidth of the blocks
@@ -86,6 +104,10 @@ class BlockCirculantSolver : public LinearSolver {
   // and the p zero rows on either side stand in for the missing band entries at the ends.
   mutable std::vector<double> work_re_, work_im_;
   std::unique_ptr<FftPlans> plans_;
+  // Split solve: G_m, column b (0, 1) at ((b s + r) lanes + m); the kept spectrum of the free solve
+  // (padded like work_); rows 0, 1 of a spectrum (scratch for the contact transforms).
+  std::vector<double> G_re_, G_im_, kept_re_, kept_im_, contact_re_, contact_im_;
+  bool kept_valid_ = false;
 };
 
 }  // namespace slidewave

@@ -108,13 +108,13 @@ void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
 struct ContactStep {
   explicit ContactStep(int n_c) : q(n_c), y(n_c), r_next(n_c), du(n_c) {}
-  GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::VectorXd& u_free, double f, const FrictionLaw& law,
-                          const GaussSeidelSettings& settings, LoopState& loop) {
+  GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::MatrixXd& W_columns, const Eigen::VectorXd& u_free,
+                          double f, const FrictionLaw& law, const GaussSeidelSettings& settings, LoopState& loop) {
     q = u_free.head(q.size());
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
-    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, y, loop.contact);
+    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, y, loop.contact, &W_columns);
   }
   Eigen::VectorXd q, y, r_next, du;  ///< du: contact displacement increment of the step
   std::vector<double> bounds;
@@ -135,8 +135,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const HHTCoefficients hht(c.time.hht_alpha, m.d.dt);
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
   HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
-                     m.factorize(effective_matrix(hht, system)));
+                     m.factorize(effective_matrix(hht, system)),
+                     c.numerics.linear_solver == LinearSolverKind::spectral);
   const Eigen::MatrixXd W = stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
+  const Eigen::MatrixXd W_columns = delassus_periodic_columns(W);
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
 
@@ -171,7 +173,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     const Eigen::VectorXd& u_free = stepper.solve_free();
     watch.lap(&StepProfile::free_solve);
     // 4b. Contact forces r(n+1): Signorini–Coulomb at every node, bounds from the friction law.
-    const GaussSeidelReport report = contact.solve(W, u_free, c.friction.f, *friction, settings, loop);
+    const GaussSeidelReport report = contact.solve(W, W_columns, u_free, c.friction.f, *friction, settings, loop);
     if (!report.converged) { failure = "contact_not_converged"; break; }
     watch.lap(&StepProfile::contact);
     // 4c. Correction with r(n+1) and Newmark update.

@@ -1,5 +1,8 @@
 #include "time/hht_stepper.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace slidewave {
 
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system) {
@@ -7,13 +10,22 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const P
 }
 
 HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
-                       std::unique_ptr<LinearSolver> K_eff)
+                       std::unique_ptr<LinearSolver> K_eff, bool one_pass)
     : system_(system),
       hht_(hht),
       w_(alpha_weighted ? 1 - hht.alpha : 1.0),
       w_previous_(alpha_weighted ? hht.alpha : 0.0),
       K_eff_(std::move(K_eff)) {
+  if (one_pass) {
+    split_ = dynamic_cast<SplitSolver*>(K_eff_.get());
+    if (!split_ || split_->n_contact() != system.n_contact)
+      throw std::invalid_argument("HHTStepper: one pass per step needs a split solver (BlockCirculantSolver) whose " +
+                                  std::string("loaded DOFs are the ") + std::to_string(system.n_contact) +
+                                  " contact DOFs");
+  }
   const int n_f = system.n_free, n = system.n_free + system.n_prescribed;
+  u_free_contact_.resize(system.n_contact);
+  contact_load_.resize(system.n_contact);
   u_tilde_.resize(n_f);
   Mu_tilde_.resize(n_f);
   rhs_.resize(n_f);
@@ -56,15 +68,25 @@ void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
 }
 
 const Eigen::VectorXd& HHTStepper::solve_free() {
-  K_eff_->solve_into(rhs_, u_free_);
-  return u_free_;
+  if (split_) {
+    split_->solve_free(rhs_, u_free_contact_);
+  } else {
+    K_eff_->solve_into(rhs_, u_free_);
+    u_free_contact_ = u_free_.head(system_.n_contact);
+  }
+  return u_free_contact_;
 }
 
 void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
   const int n_f = system_.n_free, n_c = system_.n_contact, n_d = system_.n_prescribed;
   const double a = hht_.alpha, dt = hht_.dt;
-  rhs_.head(n_c) += w_ * r_next;
-  K_eff_->solve_into(rhs_, u_work_.head(n_f));
+  if (split_) {
+    contact_load_.noalias() = w_ * r_next;
+    split_->solve_loaded(contact_load_, u_work_.head(n_f));
+  } else {
+    rhs_.head(n_c) += w_ * r_next;
+    K_eff_->solve_into(rhs_, u_work_.head(n_f));
+  }
   u_work_.tail(n_d) = u_d_next_;
   acc_f_next_.noalias() = hht_.mass_factor() * (u_work_.head(n_f) - u_tilde_);
   s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next_);

@@ -13,6 +13,11 @@
 // (C picks them), then the n_prescribed DOFs whose displacement u_d is imposed. The prescribed DOFs must
 // move at constant velocity (a = 0): the inertia coupling M_fd a_d is not in the equations.
 //
+// The two K_eff solves of a step can share one pass (one_pass = true, a SplitSolver such as
+// BlockCirculantSolver): the free solve keeps what the correction needs and yields only C u_free, and the
+// correction adds the response to w C^T r(n+1) to it (linalg/split_solver.hpp). Same discrete solution to
+// round-off, not bitwise: the default is the two solves.
+//
 // The mass products M_ff u, M_ff v, M_ff a of the free rows are carried through the step by the Newmark
 // relations and the equation of motion (M_ff a(n+1) follows from K u(n+1), K u(n) and the contact forces),
 // so that K u is the only full sparse product of a step.
@@ -21,6 +26,7 @@
 #include <memory>
 
 #include "linalg/linear_solver.hpp"
+#include "linalg/split_solver.hpp"
 #include "time/hht.hpp"
 
 namespace slidewave {
@@ -50,8 +56,10 @@ class HHTStepper {
  public:
   /// @param K_eff  factorization of effective_matrix(hht, system)
   /// @param alpha_weighted  true: contact forces weighted like external forces (w = 1-a, a' = a)
+  /// @param one_pass  the free solve and the correction share one pass: K_eff must be a SplitSolver whose
+  ///                  n_contact() is system.n_contact (std::invalid_argument otherwise)
   HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
-             std::unique_ptr<LinearSolver> K_eff);
+             std::unique_ptr<LinearSolver> K_eff, bool one_pass = false);
 
   /// State at rest in the equation of motion: K u, the mass products, and the consistent acceleration
   /// M_ff a_f = C^T r - (K u)_f (a = 0 on the prescribed DOFs).
@@ -61,7 +69,8 @@ class HHTStepper {
 
   /// Predictor and right-hand side of the free solve for the prescribed displacement u_d(n+1).
   void predict(const HHTState& state, const Eigen::VectorXd& u_d_next);
-  /// Free solve (r(n+1) = 0): the result stays valid until the next predict().
+  /// Free solve (r(n+1) = 0): its displacement at the contact DOFs (n_contact entries), valid until the next
+  /// predict().
   const Eigen::VectorXd& solve_free();
   /// Correction with the contact forces r(n+1), Newmark update: the state moves to time n+1.
   void correct(const Eigen::VectorXd& r_next, HHTState& state);
@@ -80,6 +89,8 @@ class HHTStepper {
   HHTCoefficients hht_;
   double w_, w_previous_;
   std::unique_ptr<LinearSolver> K_eff_;
+  SplitSolver* split_ = nullptr;  ///< K_eff_ on the one-pass path, else null
+  Eigen::VectorXd u_free_contact_, contact_load_;
   Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, acc_f_next_, r_previous_;
 };
 

@@ -67,6 +67,14 @@ TEST(Delassus, EqualsDenseCKinvCt) {
         EXPECT_LE((W_periodic - W_ref).norm(), 1e-12 * W_ref.norm()) << where << " (periodic shift)";
         EXPECT_EQ((W - W.transpose()).norm(), 0.0) << where;
         EXPECT_EQ((W_periodic - W_periodic.transpose()).norm(), 0.0) << where;
+        // Its two generating columns, rotated, are W's columns bit for bit (what the sweeps read).
+        const Eigen::MatrixXd columns = delassus_periodic_columns(W_periodic);
+        const int n = t.model.mesh.n_contact();
+        for (int k = 0; k < n; ++k)
+          for (int b = 0; b < 2; ++b)
+            EXPECT_EQ(Eigen::VectorXd(W_periodic.col(2 * k + b)),
+                      Eigen::VectorXd(columns.col(b).segment(2 * ((n - k) % n), 2 * n)))
+                << where << " column " << 2 * k + b;
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(W_periodic);
         EXPECT_GT(eig.eigenvalues().minCoeff(), 1e-6 * eig.eigenvalues().maxCoeff())
             << where << ": W must be positive definite";

@@ -244,5 +244,37 @@ TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
   EXPECT_EQ(testing::signorini_coulomb_violations(W, q, 1.5, r, 1e-10 * r(1)), "");
 }
 
+// The sweeps' updates through W's two generating columns (delassus_periodic_columns) give the result of the
+// updates through W itself bit for bit: a frictional problem with slip, stick and opening on a layer's
+// periodic Delassus operator, plain and (many sweeps, Prakash–Clifton-like bounds) cycling solves.
+TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolveBitForBit) {
+  const LayerModel model(testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
+  const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff), model.mesh.n_contact());
+  const Eigen::MatrixXd columns = delassus_periodic_columns(W);
+  const int n = model.mesh.n_contact();
+  std::mt19937_64 generator(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd q(2 * n);
+    for (int k = 0; k < n; ++k) {
+      q(2 * k) = 0.02 * uniform(generator);
+      q(2 * k + 1) = -0.025 + 0.03 * uniform(generator);  // some nodes open
+    }
+    std::vector<double> bounds;
+    if (trial % 2) bounds.assign(n, 0.5 * model.d.p0 * model.d.h);
+    const GaussSeidelSettings settings{1e-12, 200, model.d.p0 * model.d.h};
+    Eigen::VectorXd r_dense = Eigen::VectorXd::Zero(2 * n), r_columns = r_dense, y_dense, y_columns;
+    std::vector<ContactState> state_dense, state_columns;
+    const auto a = solve_contact_gauss_seidel(W, q, 1.5, bounds, settings, r_dense, y_dense, state_dense);
+    const auto b = solve_contact_gauss_seidel(W, q, 1.5, bounds, settings, r_columns, y_columns, state_columns, &columns);
+    EXPECT_GT(a.iterations, 2) << trial;
+    EXPECT_EQ(a.iterations, b.iterations) << trial;
+    EXPECT_EQ(a.converged, b.converged) << trial;
+    EXPECT_EQ(r_dense, r_columns) << trial;
+    EXPECT_EQ(y_dense, y_columns) << trial;
+    EXPECT_EQ(state_dense, state_columns) << trial;
+  }
+}
+
 }  // namespace
 }  // namespace slidewave
