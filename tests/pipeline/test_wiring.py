@@ -161,4 +161,4 @@ def test_publish_results_writes_every_committed_table():
     result, counts = dry(REPO, "publish_results", "--forceall")
     copies = {fields["output"] for rule, fields in jobs(result.stdout) if rule == "publish_table"}
     committed = {str(path) for path in (REPO / "study" / "results").glob("*/*") if path.suffix in (".csv", ".json")}
-    assert copies == committed and counts["publish_table"] == len(committed) == 21 * 3
+    assert copies == committed and counts["publish_table"] == len(committed) == 25 * 3
