@@ -204,8 +204,8 @@ def category_matches(category: Any, published: str) -> bool:
 
 
 def incomplete_reason(metrics: dict[str, Any]) -> str | None:
-    """The end_reason of a run that did not complete (`run_complete` false), else None."""
-    if metrics.get("run_complete", True) is not False:
+    """The end_reason of a run that did not complete (`complete` false), else None."""
+    if metrics.get("complete", True) is not False:
         return None
     return str(metrics.get("end_reason") or "incomplete")
 

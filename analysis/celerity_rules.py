@@ -4,7 +4,8 @@ Each rule picks a window and the fronts to fit; the fit is the pooled slope of `
 (one intercept per front). Times are in the run's own unit (the caller scales the paper's 200 s
 and 100 s, `analysis.measure.time_unit_ratio`).
 
-- `localization`: today's rule, `celerity_from_fronts` unchanged (its number is `celerity`).
+- `localization`: the first rule of the analysis (`celerity` until analysis version 4),
+  `celerity_from_fronts` unchanged.
 - `opening_pulse`: the major front whose pulse opens. A major front's pulse *opens* when, in one
   of the output frames in which the front is tracked (its whole life, from its localization = its
   start), a node of the slipping run bounded by that front has u_y above the run's opening
@@ -47,8 +48,10 @@ from analysis.tracking import DEFAULT_MIN_POINTS, EdgeTrack, FrontMap, find_edge
 #: The rules, in the order of docs/measurement-rule.md.
 RULES = ("localization", "opening_pulse", "opening_pulse_from_opening", "opening_front",
          "first_100s", "late")
-#: The rule whose celerity is `celerity` (docs/measurement-rule.md decides; switched separately).
-DEFAULT_RULE = "localization"
+#: The rule whose celerity is `celerity`, for every run (docs/measurement-rule.md decides).
+DEFAULT_RULE = "opening_pulse"
+#: The default's window sensitivity: the same pulse measured from its opening (S3 of the argument).
+WINDOW_SENSITIVITY_RULE = "opening_pulse_from_opening"
 #: Window of `first_100s` (s, paper's unit).
 DEFAULT_FIRST_WINDOW_LENGTH = 100.0
 
@@ -56,13 +59,17 @@ DEFAULT_FIRST_WINDOW_LENGTH = 100.0
 @dataclass(frozen=True)
 class RuleResult:
     """celerity (m/s, nan when undefined); reason ("ok" or why undefined); window = (first, last)
-    time of the fitted points (s); deceleration (-, see the module docstring); fronts fitted."""
+    time of the fitted points (s); deceleration (-, see the module docstring); fronts fitted;
+    n_counter_fronts = major fronts in the window moving the other way, at least as strong as
+    those that join the fit; n_secondary_fronts = major fronts in the window left out as weaker."""
 
     celerity: float
     reason: str
     window: tuple[float, float] | None = None
     deceleration: float = math.nan
     fronts: tuple[EdgeTrack, ...] = field(default=(), repr=False)
+    n_counter_fronts: int = 0
+    n_secondary_fronts: int = 0
 
 
 def deceleration(fronts: list[EdgeTrack] | tuple[EdgeTrack, ...], slope: float) -> float:
@@ -82,10 +89,11 @@ def deceleration(fronts: list[EdgeTrack] | tuple[EdgeTrack, ...], slope: float) 
     return (slopes[1] - slopes[0]) / slope
 
 
-def _fit(fronts: list[EdgeTrack]) -> RuleResult:
+def _fit(fronts: list[EdgeTrack], n_counter_fronts: int = 0, n_secondary_fronts: int = 0) -> RuleResult:
     slope = cel.pooled_slope(fronts)[0]
     window = (min(track.start for track in fronts), max(track.end for track in fronts))
-    return RuleResult(slope, "ok", window, deceleration(fronts, slope), tuple(fronts))
+    return RuleResult(slope, "ok", window, deceleration(fronts, slope), tuple(fronts),
+                      n_counter_fronts, n_secondary_fronts)
 
 
 def from_celerity_result(result: cel.CelerityResult) -> RuleResult:
@@ -93,7 +101,8 @@ def from_celerity_result(result: cel.CelerityResult) -> RuleResult:
     if result.reason != "ok":
         return RuleResult(math.nan, result.reason)
     return RuleResult(result.celerity, "ok", result.window,
-                      deceleration(result.fronts, result.celerity), result.fronts)
+                      deceleration(result.fronts, result.celerity), result.fronts,
+                      result.n_counter_fronts, result.n_secondary_fronts)
 
 
 def anchored_fit(anchor: EdgeTrack, direction: int, major: tuple[tuple[EdgeTrack, int], ...],
@@ -105,14 +114,20 @@ def anchored_fit(anchor: EdgeTrack, direction: int, major: tuple[tuple[EdgeTrack
     first = anchor.within(start, start + length)
     if first.t.size < min_points:
         return RuleResult(math.nan, "empty_window")
-    fronts = [first]
+    fronts, counter, secondary = [first], 0, 0
     for track, d in major:
-        if track is anchor or d != direction:
+        if track is anchor:
             continue
         part = track.within(start, start + length)
-        if part.t.size >= min_points and part.strength >= min_relative_strength * first.strength:
+        if part.t.size < min_points:
+            continue
+        if part.strength < min_relative_strength * first.strength:
+            secondary += 1
+        elif d == direction:
             fronts.append(part)
-    return _fit(fronts)
+        else:
+            counter += 1
+    return _fit(fronts, counter, secondary)
 
 
 def _run_nodes(mask: np.ndarray, grid: PeriodicGrid, kind: str, position: float) -> np.ndarray:
@@ -163,8 +178,9 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
                   slip_threshold: float, opening_threshold: float, first_opening_time: float,
                   min_speed: float, window_length: float = cel.DEFAULT_WINDOW_LENGTH,
                   major_duration: float = cel.DEFAULT_MAJOR_DURATION,
-                  first_window_length: float = DEFAULT_FIRST_WINDOW_LENGTH) -> dict[str, RuleResult]:
-    """Every rule of RULES on one run -> {rule: RuleResult}.
+                  first_window_length: float = DEFAULT_FIRST_WINDOW_LENGTH,
+                  names: tuple[str, ...] = RULES) -> dict[str, RuleResult]:
+    """The rules `names` (default: every rule of RULES) on one run -> {rule: RuleResult}.
 
     Parameters
     ----------
@@ -172,7 +188,7 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
         Node positions (m), output times (s), slip velocity (m/s) and opening (m) maps.
     front_map, localization
         The slip-front map (`find_edges` at slip_threshold) and `celerity_from_fronts` on it with
-        the same min_speed, window_length and major_duration (today's rule).
+        the same min_speed, window_length and major_duration (the `localization` rule).
     slip_threshold, opening_threshold
         Slip-velocity (m/s) and opening (m) thresholds.
     first_opening_time
@@ -181,12 +197,52 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
         As in `celerity_from_fronts` (m/s, s, s).
     first_window_length
         Window of `first_100s` (s).
+    names
+        The rules to measure (a subset of RULES; `opening_pulse` and `opening_pulse_from_opening`
+        come together); the others are skipped, e.g. for a re-measurement at another threshold.
     """
+    unknown = sorted(set(names) - set(RULES))
+    if unknown:
+        raise ValueError(f"unknown rule(s) {', '.join(unknown)}; the rules are {', '.join(RULES)}")
     kw = dict(min_speed=min_speed, window_length=window_length, major_duration=major_duration)
     out = {"localization": from_celerity_result(localization)}
     major = localization.major
     opened = math.isfinite(first_opening_time)
+    if {"opening_pulse", "opening_pulse_from_opening"} & set(names):
+        out.update(_opening_pulse_rules(t, v, u_y, front_map, localization, opened,
+                                        slip_threshold, opening_threshold, window_length))
 
+    # The opening front, on the opening map.
+    if "opening_front" in names and opened:
+        open_map = find_edges(x, t, u_y, opening_threshold)
+        out["opening_front"] = from_celerity_result(
+            cel.celerity_from_fronts(open_map, window_start=first_opening_time, **kw))
+    elif "opening_front" in names:
+        out["opening_front"] = RuleResult(math.nan, "no_opening")
+
+    # The strongest major front over its first 100 s, alone.
+    if "first_100s" in names:
+        firsts = [(track.within(track.start, track.start + first_window_length), direction)
+                  for track, direction in major]
+        firsts = [(part, d) for part, d in firsts if part.t.size >= DEFAULT_MIN_POINTS]
+        if firsts:
+            out["first_100s"] = _fit([max(firsts, key=lambda item: item[0].strength)[0]])
+        else:
+            out["first_100s"] = RuleResult(math.nan, localization.reason if not major else "empty_window")
+
+    # A late window, ending at the last output.
+    if "late" in names:
+        out["late"] = from_celerity_result(
+            cel.celerity_from_fronts(front_map, window_start=float(t[-1]) - window_length, **kw))
+    return {name: out[name] for name in RULES if name in names}
+
+
+def _opening_pulse_rules(t: np.ndarray, v: np.ndarray, u_y: np.ndarray, front_map: FrontMap,
+                         localization: cel.CelerityResult, opened: bool, slip_threshold: float,
+                         opening_threshold: float, window_length: float) -> dict[str, RuleResult]:
+    """`opening_pulse` and `opening_pulse_from_opening` (arguments as in `measure_rules`)."""
+    out = {}
+    major = localization.major
     # The major pulse that opens (the strongest front whose run opens), and when.
     if localization.reason in ("no_slip", "uniform_slip", "no_major_front"):
         pulse_reason = localization.reason
@@ -207,27 +263,6 @@ def measure_rules(x: np.ndarray, t: np.ndarray, v: np.ndarray, u_y: np.ndarray,
         out["opening_pulse_from_opening"] = anchored_fit(anchor, direction, major, t_open, window_length)
     else:
         out["opening_pulse"] = out["opening_pulse_from_opening"] = RuleResult(math.nan, pulse_reason)
-
-    # The opening front, on the opening map.
-    if opened:
-        open_map = find_edges(x, t, u_y, opening_threshold)
-        out["opening_front"] = from_celerity_result(
-            cel.celerity_from_fronts(open_map, window_start=first_opening_time, **kw))
-    else:
-        out["opening_front"] = RuleResult(math.nan, "no_opening")
-
-    # The strongest major front over its first 100 s, alone.
-    firsts = [(track.within(track.start, track.start + first_window_length), direction)
-              for track, direction in major]
-    firsts = [(part, d) for part, d in firsts if part.t.size >= DEFAULT_MIN_POINTS]
-    if firsts:
-        out["first_100s"] = _fit([max(firsts, key=lambda item: item[0].strength)[0]])
-    else:
-        out["first_100s"] = RuleResult(math.nan, localization.reason if not major else "empty_window")
-
-    # A late window, ending at the last output.
-    out["late"] = from_celerity_result(
-        cel.celerity_from_fronts(front_map, window_start=float(t[-1]) - window_length, **kw))
     return out
 
 

@@ -98,20 +98,29 @@ def _compare(args: argparse.Namespace) -> int:
 
 def _score_rules(args: argparse.Namespace) -> int:
     from analysis import aggregate as agg
-    from analysis.atomic import write_file
+    from analysis.atomic import write_files
     from analysis.reference import read_reference
-    from analysis.rule_scores import rule_scores, scores_csv, scores_text
+    from analysis.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
 
     reference = read_reference(args.reference)
+    outputs = {}
+    if args.out_dir is not None:
+        outputs.update({args.out_dir / name: None for name in SCORE_FILES})
     if args.out is not None:
-        _refuse_input_as_output(args.out, list(args.metrics) + [args.reference])
+        outputs[args.out] = None
+    for output in outputs:
+        _refuse_input_as_output(output, list(args.metrics) + [args.reference])
     metrics = agg.select([agg.load_metrics(path) for path in args.metrics],
                          agg.parse_selection(args.select))
     scores = rule_scores(metrics, reference, args.tolerance)
     print(scores_text(scores), end="")
+    if args.out_dir is not None:
+        outputs.update({args.out_dir / name: text for name, text in score_files(scores).items()})
     if args.out is not None:
-        write_file(args.out, scores_csv(scores))
-        print(f"-> {args.out}")
+        outputs[args.out] = scores_csv(scores)
+    if outputs:
+        write_files(outputs)
+        print(f"-> {', '.join(str(path) for path in outputs)}")
     return 0
 
 
@@ -180,6 +189,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value are scored (repeatable), e.g. elements_per_H=64")
     p.add_argument("--out", type=Path, help="also write the scores as CSV (one row per rule)")
+    p.add_argument("-o", "--out-dir", type=Path,
+                   help="also write DIR/rule_scores.csv, .md and .tex (the report's table)")
     p.set_defaults(handler=_score_rules)
 
     p = commands.add_parser("flutter-boundary",

@@ -6,8 +6,9 @@ reads the aggregate's ``all_metrics.csv`` of a sweep (one row per run) and write
 at all:
 
 - ``ensemble.csv``: one row per cell (runs equal in every ``CELL_KEYS`` column), ``ENSEMBLE_COLUMNS``:
-  the celerity's mean, sample standard deviation, min and max over the runs with a persistent front
-  (``celerity_reason`` ok: a celerity was measured), ``n_front`` of ``n_runs``, the majority
+  the celerity's mean, sample standard deviation, min and max over the runs with a celerity
+  (``celerity_reason`` ok: the default rule found the major pulse that opens, its persistent
+  front; a run that does not open has none), ``n_front`` of ``n_runs``, the majority
   category and ``category_agreement`` (fraction of the runs in it), the run of the default seed
   (``celerity_seed1``), and against the published value: ``deviation_mean_rel`` =
   (mean - published) / |published|, ``deviation_seed1_rel``, ``spread_rel`` = std / |published|,
@@ -196,7 +197,7 @@ def ensemble_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> st
     n = summary["published_cells"]
     lines += ["", f"within {100 * summary['tolerance']:g}%: {summary['within_tol_seed1']}/{n} (seed 1), "
               f"{summary['within_tol_mean']}/{n} (ensemble mean); {summary['runs_with_front']}/"
-              f"{summary['runs']} runs with a persistent front"]
+              f"{summary['runs']} runs with a celerity (an opening pulse)"]
     return "\n".join(lines) + "\n"
 
 

@@ -18,23 +18,17 @@ from typing import Any
 import numpy as np
 
 from analysis import celerity as cel
+from analysis import celerity_default
 from analysis import celerity_rules as rules
 from analysis import dissipation, energy, flutter, inversion, opening, pulses, regime, theory, validity
 from analysis.errors import InputError
 from analysis.io import RunData
 from analysis.edges import slipping_mask
 from analysis.tracking import EdgeTrack, find_edges
-from analysis.xcorr import XcorrResult, celerity_by_xcorr
 
-#: Version of the measurement definitions, written into every metrics file.
-ANALYSIS_VERSION = "3"
-
-#: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
-QUALITY_AGREEMENT = 0.02
-#: |drift| above this -> "unsteady";
-QUALITY_DRIFT = 0.05
-#: |c| dt_out above this fraction of the pulse spacing -> "aliasing_risk" (the limit is 1/2).
-ALIASING_FRACTION = 0.4
+#: Version of the measurement definitions, written into every metrics file (analysis/README.md
+#: says what each version changed).
+ANALYSIS_VERSION = "4"
 
 #: Run parameters copied into the metrics: key -> (config group, config key).
 PARAMETERS = {
@@ -121,13 +115,6 @@ def _onset_time(t: np.ndarray, v: np.ndarray, state: np.ndarray, speed: float) -
     return float(t[frames[0]]) if frames.size else math.nan
 
 
-def _relative(a: float, b: float) -> float:
-    """(a - b) / |b|, nan when either is nan or b = 0."""
-    if not (math.isfinite(a) and math.isfinite(b)) or b == 0:
-        return math.nan
-    return (a - b) / abs(b)
-
-
 def _fronts_at(tracks: list[EdgeTrack], time: float) -> np.ndarray:
     positions = []
     for track in tracks:
@@ -166,7 +153,7 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     # 1. Onset of slip.
     onset_time = _onset_time(t, v, interface.state, settings.onset_rel * V0)
 
-    # 2. Slip fronts and celerity (threshold method), then the cross-correlation estimate.
+    # 2. Slip fronts (threshold method) and the localization of the first major front.
     threshold = settings.threshold_rel * V0
     min_speed = settings.min_speed_rel * c_s
     front_map = find_edges(x, t, v, threshold)
@@ -174,34 +161,43 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     window_length, major_duration = settings.window_length * unit, settings.major_duration * unit
     kw = dict(min_speed=min_speed, window_length=window_length, major_duration=major_duration)
     result = cel.celerity_from_fronts(front_map, **kw)
-    c_p = result.celerity
-    xcorr = (celerity_by_xcorr(x, t, v, result.window) if result.window is not None
-             else XcorrResult(math.nan))
 
     # 3. Opening, above the solver's threshold (the one of stop_after_opening).
     open_threshold = run.attr("opening_threshold")
     opened = opening.summarize_opening(x, t, interface.opening, open_threshold)
+
+    # 4. Every measurement rule of docs/measurement-rule.md; `celerity` is the default rule's, for
+    # every run (nan with its reason where it is undefined), and so are its diagnostics; the
+    # threshold sensitivity is the default rule at a higher threshold.
+    rule_kw = dict(slip_threshold=threshold, opening_threshold=open_threshold,
+                   first_opening_time=opened.t_first,
+                   first_window_length=settings.first_window_length * unit, **kw)
+    by_rule = rules.measure_rules(x, t, v, interface.opening, front_map, result, **rule_kw)
+    default = by_rule[rules.DEFAULT_RULE]
+    c_p = default.celerity
+    high_threshold = threshold * settings.sensitivity_threshold_factor
+    high_map = find_edges(x, t, v, high_threshold)
+    high = rules.measure_rules(x, t, v, interface.opening, high_map,
+                               cel.celerity_from_fronts(high_map, **kw),
+                               **{**rule_kw, "slip_threshold": high_threshold},
+                               names=(rules.DEFAULT_RULE,))[rules.DEFAULT_RULE]
+    count_all, spacing_all = pulses.pulse_train(default.fronts, front_map.grid.period)
+    celerity_keys = celerity_default.celerity_metrics(
+        by_rule, high, x=x, t=t, v=v, c_s=c_s, output_interval=front_map.output_interval,
+        pulse_spacing=spacing_all if math.isfinite(spacing_all) else front_map.grid.period,
+        window_length=window_length)
+
+    # Where the first opening sits relative to the major fronts of the celerity's direction.
     behind = inside_slip = None
-    major_same_direction = result.major_in_direction()
+    c_direction = celerity_default.direction(default)
     if opened.opened:
         k = int(np.flatnonzero(t == opened.t_first)[0])
         i = int(np.argmin(np.abs(x - opened.x_first)))
         inside_slip = bool(slipping_mask(v[k], threshold)[i])
+        same_direction = [track for track, d in result.major if d == c_direction != 0]
         behind = opening.distance_behind_front(opened.x_first,
-                                               _fronts_at(major_same_direction, opened.t_first),
-                                               result.direction, front_map.grid.period)
-
-    # 4. Sensitivity of the celerity: window from the first opening; a higher threshold.
-    c_opening_window = math.nan
-    if opened.opened and result.reason == "ok":
-        c_opening_window = cel.celerity_from_fronts(front_map, window_start=opened.t_first, **kw).celerity
-    high = cel.celerity_from_fronts(
-        find_edges(x, t, v, threshold * settings.sensitivity_threshold_factor), **kw)
-    # Every measurement rule of docs/measurement-rule.md; `celerity` is the default rule's.
-    by_rule = rules.measure_rules(x, t, v, interface.opening, front_map, result,
-                                  slip_threshold=threshold, opening_threshold=open_threshold,
-                                  first_opening_time=opened.t_first,
-                                  first_window_length=settings.first_window_length * unit, **kw)
+                                               _fronts_at(same_direction, opened.t_first),
+                                               c_direction, front_map.grid.period)
 
     # 5. T/N: minimum, inversion, frictional drops.
     ratio = inversion.bridge_undefined(series.t, series.T_over_N)
@@ -216,7 +212,6 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     later_starts = [d.T_over_N_start for d in drops[1:]]
 
     # 6. Pulse train, regime, category, energy.
-    count_all, spacing_all = pulses.pulse_train(result.fronts, front_map.grid.period)
     # Major pulses weighed by what they open over their life; on the slip velocity if never open.
     major, major_field = pulses.MajorPulses(0, math.nan), None
     if math.isfinite(c_p):
@@ -237,20 +232,6 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
     balance_error, residual_max = energy.energy_balance_error(
         series.energy_kinetic, series.energy_elastic, series.work_external,
         series.dissipation_friction, series.energy_balance_residual)
-    spacing_limit = spacing_all if math.isfinite(spacing_all) else front_map.grid.period
-    agreement = abs(_relative(xcorr.celerity, c_p))
-    aliasing_risk = (bool(result.frame_shift > ALIASING_FRACTION * spacing_limit)
-                     if math.isfinite(result.frame_shift) else None)
-    quality = None
-    if result.reason == "ok":
-        concerns = [name for name, bad in (
-            ("estimates_disagree", not agreement <= QUALITY_AGREEMENT),
-            ("unsteady", not abs(result.drift) <= QUALITY_DRIFT),
-            ("aliasing_risk", aliasing_risk),
-            ("counter_fronts", result.n_counter_fronts > 0),
-            ("short_window", result.window[1] - result.window[0] < 0.5 * window_length),
-        ) if bad]
-        quality = ";".join(concerns) or "ok"
     unphysical = validity.non_physical_reason(run, opened.max_opening)
 
     metrics: dict[str, Any] = {
@@ -259,7 +240,6 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "slidewave_version": run.attrs.get("slidewave_version"),
         "git_commit": run.attrs.get("git_commit"),
         "complete": run.complete,
-        "run_complete": run.complete,  # former name of "complete" (study/scripts/report.py)
         "end_reason": run.end_reason,
         "non_physical": unphysical is not None,
         "non_physical_reason": unphysical,
@@ -273,32 +253,9 @@ def measure_run(run: RunData, settings: Settings | None = None) -> dict[str, Any
         "window_length": window_length, "major_duration": major_duration,
         "onset_time": onset_time,
         "onset_time_estimate": run.attr("t_onset_estimate"),
-        "celerity": c_p,
-        "celerity_over_cs": c_p / c_s,
-        "celerity_reason": result.reason,
-        "celerity_window": list(result.window) if result.window else None,
-        "celerity_window_start": result.window[0] if result.window else math.nan,
-        "celerity_window_end": result.window[1] if result.window else math.nan,
+        **celerity_keys,
         "localization_time": result.t_localized,
-        "celerity_stderr": result.stderr,
-        "celerity_r2": result.r2,
-        "celerity_rms": result.rms,
-        "celerity_n_fronts": result.n_fronts,
-        "celerity_n_points": result.n_points,
-        "celerity_n_counter_fronts": result.n_counter_fronts,
-        "celerity_n_secondary_fronts": result.n_secondary_fronts,
-        "celerity_drift": result.drift,
-        "celerity_frame_shift": result.frame_shift,
-        "celerity_aliasing_risk": aliasing_risk,
-        "celerity_quality": quality,
-        "celerity_xcorr": xcorr.celerity,
-        "celerity_xcorr_peak": xcorr.peak_correlation,
-        "celerity_agreement": agreement,
-        "celerity_opening_window": c_opening_window,
-        "celerity_window_sensitivity": _relative(c_opening_window, c_p),
         **rules.rule_metrics(by_rule),
-        "celerity_high_threshold": high.celerity,
-        "celerity_threshold_sensitivity": _relative(high.celerity, c_p),
         "regime": regime.regime(c_p, c_s, c_l),
         "below_sqrt2_cs": regime.below_sqrt2_cs(c_p, c_s),
         "intersonic_below_sqrt2_cs": regime.intersonic_below_sqrt2_cs(c_p, c_s),

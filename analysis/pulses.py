@@ -120,6 +120,10 @@ def major_pulses(x: np.ndarray, t: np.ndarray, field: np.ndarray, threshold: flo
     mask = slipping_mask(relative, fraction * (1 - 1e-12))
     if mask.all():
         return MajorPulses(1, grid.period, (1.0,), 0.0)
+    if not mask.any():
+        # The zones above the fraction are all narrower than a pulse (slipping_mask's minimum
+        # width): spikes of the accumulated map, not pulses.
+        return MajorPulses(0, math.nan)
     previous = np.roll(mask, 1)
     starts = np.flatnonzero(mask & ~previous)
     ends = np.flatnonzero(~mask & previous)

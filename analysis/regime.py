@@ -1,18 +1,24 @@
 """Regime of a slip front and the category of a run for the phase diagram (paper Fig. 4a).
 
 Regime from |c_p|: subsonic (|c_p| < c_s), intersonic (c_s <= |c_p| <= c_l), supersonic
-(|c_p| > c_l). Categories, from what a run shows:
+(|c_p| > c_l). The category's front is the opening pulse: direction and regime of a run that
+opens come from `celerity`, the default measurement rule `opening_pulse` (the major slip pulse
+that opens, docs/measurement-rule.md), never from another front of the run. Categories, from
+what a run shows:
 
 - ``no_slip``: the interface never slips (above the threshold);
 - ``uniform_slip``: it slips, never in localized pulses, and never opens;
-- ``no_opening``: slip fronts, no opening (the paper's open circles);
+- ``no_opening``: slip fronts (the slipping set has edges; in practice the localization rule
+  finds a persistent major front), no opening (the paper's open circles); such a run has no
+  `celerity` (the opening pulse is undefined), its fronts are in ``celerity_rule_localization``;
 - ``intersonic_opening``: opening, front intersonic in the sliding direction (+x) (squares);
 - ``intersonic_opening_inversion``: the same with T/N < 0 at some time (double squares);
 - ``supersonic_backward_opening``: opening, front supersonic against the sliding direction
   (diamonds; inversion is reported separately);
 - the honest others: ``supersonic_forward_opening`` (e.g. the paper's nu = 0, f = 2),
   ``intersonic_backward_opening``, ``subsonic_forward_opening``, ``subsonic_backward_opening``,
-  and ``opening_without_front`` (opens, but no front could be measured);
+  and ``opening_without_front`` (opens, but without an opening pulse: no major slip front whose
+  slipping run opens, hence no `celerity`);
 - ``non_physical``: the run reached a state outside the model (non-finite values, an opening
   larger than H; `analysis.validity`), whatever it shows otherwise;
 - ``sampling_too_coarse``: the interface output is too sparse to see fronts (fewer than
@@ -90,7 +96,7 @@ def category(*, slipped: bool, has_front: bool, opened: bool, celerity: float, c
     opened
         The opening exceeded its threshold.
     celerity
-        Signed front celerity (m/s), nan if not measured.
+        Signed celerity of the opening pulse (m/s; the metrics' `celerity`), nan if undefined.
     c_s, c_l
         Wave speeds (m/s).
     inversion

@@ -9,7 +9,10 @@ E and rho), the published value (study/reference/table1_celerity.csv) and the ce
 committed series in study/results (mesh, time step, seed), signed as measured. The plot shows only
 backward (negative) measured celerities; a positive value in the table is a pulse of another regime.
 
-Not wired into Snakemake yet; unlike the other figure scripts it evaluates the theory itself (a
+In the pipeline (rule `fig_backward_celerity`, study/rules/figures.smk) every folder's table is
+given by `--table FOLDER=PATH` (results/<sweep>/table/all_metrics.csv); without it the committed
+copies in --results are read, and the series of `timestep_backward` is left out (with a note) while
+its table is not committed yet. Unlike the other figure scripts it evaluates the theory itself (a
 root find, no run data), since there is no generated theory file to read.
 """
 import argparse
@@ -45,7 +48,13 @@ SERIES = [
      dict(elements_per_H=32, dt_times_cs=1.0, seed=1), dict(color="tab:green", marker="^")),
     ("h64_dt1", "$H/64$, $\\Delta t\\,c_s$ = 1 m", "timestep",
      dict(elements_per_H=64, dt_times_cs=1.0, seed=1), dict(color="tab:green", marker="o")),
+    ("h64_dt0.125", "$H/64$, $\\Delta t\\,c_s$ = 0.125 m", "timestep_backward",
+     dict(elements_per_H=64, dt_times_cs=0.125, seed=1), dict(color="tab:cyan", marker="o")),
+    ("h64_dt0.0625", "$H/64$, $\\Delta t\\,c_s$ = 0.0625 m", "timestep_backward",
+     dict(elements_per_H=64, dt_times_cs=0.0625, seed=1), dict(color="tab:purple", marker="o")),
 ]
+#: Folders whose committed table may not exist yet (standalone use only).
+OPTIONAL_FOLDERS = ("timestep_backward",)
 COMMON = dict(integration="reduced", regularization="none", lambda_over_H=2, V0_over_cs=1e-5)
 REQUIRED = ("nu", "f", "celerity", "integration", "regularization", "lambda_over_H", "E", "rho",
             "V0_over_cs") + tuple(SERIES[0][3])
@@ -58,6 +67,8 @@ def parse_args(argv):
     parser.add_argument("--out", required=True, help="output folder")
     parser.add_argument("--results", default=str(ROOT / "study" / "results"),
                         help="folder of the committed sweep tables (default: study/results)")
+    parser.add_argument("--table", action="append", default=[], metavar="FOLDER=PATH",
+                        help="the all_metrics.csv of a series' folder (repeat; overrides --results)")
     parser.add_argument("--reference", default=str(ROOT / "study" / "reference" / "table1_celerity.csv"),
                         help="published celerities (nu, f, celerity_m_per_s)")
     return parser.parse_args(argv)
@@ -75,11 +86,33 @@ def _matches(row, wanted):
     return all(_same(row[k], v) for k, v in wanted.items())
 
 
-def measured(results, nu):
-    """{column: {f: celerity}} of the committed runs at nu (E = 1000 Pa, rho = 1000 kg/m^3)."""
+def table_paths(results, overrides):
+    """{folder: all_metrics.csv path}: the --table overrides, else the committed copy in results;
+    an optional folder without a committed table is left out."""
+    paths = {}
+    for text in overrides:
+        folder, sep, path = text.partition("=")
+        if not sep or folder not in {s[2] for s in SERIES} or not path:
+            raise InputError(f"--table takes FOLDER=PATH with FOLDER one of "
+                             f"{', '.join(sorted({s[2] for s in SERIES}))} (got '{text}')")
+        paths[folder] = Path(path)
+    for folder in {s[2] for s in SERIES} - set(paths):
+        path = Path(results) / folder / "all_metrics.csv"
+        if folder in OPTIONAL_FOLDERS and not path.exists() and not overrides:
+            print(f"note: {path} not found: its series is left out", file=sys.stderr)
+            continue
+        paths[folder] = path
+    return paths
+
+
+def measured(paths, nu):
+    """{column: {f: celerity}} of the runs at nu (E = 1000 Pa, rho = 1000 kg/m^3)."""
     out = {}
     for column, _, folder, wanted, _ in SERIES:
-        path = Path(results) / folder / "all_metrics.csv"
+        if folder not in paths:
+            out[column] = {}
+            continue
+        path = paths[folder]
         rows = read_csv(path, REQUIRED)
         picked = {}
         for row in rows:
@@ -105,9 +138,9 @@ def theory_celerity(nu, f):
     return -supersonic.supersonic_trace_speed(nu, f, c_s)
 
 
-def collect(results, reference):
+def collect(paths, reference):
     """{nu: (published {f: celerity}, measured {column: {f: celerity}})}: every input read once."""
-    return {nu: (published(reference, nu), measured(results, nu)) for nu in NU_VALUES}
+    return {nu: (published(reference, nu), measured(paths, nu)) for nu in NU_VALUES}
 
 
 def table_rows(data):
@@ -176,7 +209,7 @@ def plot(data, out):
 def main(argv=None):
     # 1. Parse options; 2. collect theory, published and measured celerities; 3. write table, plot.
     args = parse_args(argv)
-    data = collect(args.results, args.reference)  # every input is read before anything is written
+    data = collect(table_paths(args.results, args.table), args.reference)  # every input is read before anything is written
     out = Path(args.out)
     os.makedirs(out, exist_ok=True)
     write_tables(table_rows(data), out)

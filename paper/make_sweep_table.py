@@ -14,7 +14,7 @@ first_drop_start_after_onset, first_drop_duration), comes from the inputs.
 
 Incomplete measurements are marked, never shown as results: a value of the first frictional drop
 (DROP_COLUMNS) from a run that stopped before T/N recovered (derived column first_drop_complete
-false) carries (s), and every value of a run that did not complete (run_complete false) carries (i);
+false) carries (s), and every value of a run that did not complete (complete false) carries (i);
 a note under the table says what the marks mean. A heading with '|' is set on two lines.
 """
 
@@ -98,7 +98,7 @@ def marks(row: dict, column: str) -> str:
     out = ""
     if column in DROP_COLUMNS and row.get("first_drop_complete") is False:
         out += "(s)"
-    if row.get("run_complete") is False:
+    if row.get("complete") is False:
         out += "(i)"
     return out
 
@@ -106,7 +106,7 @@ def marks(row: dict, column: str) -> str:
 def read(path: str, columns: list[str]) -> list[dict]:
     """The rows of one all_metrics.csv; InputError when it lacks a column of the table (derived columns
     such as celerity_over_cs come from `analysis aggregate`: rerun it for an older table)."""
-    needed = list(columns) + ["run_complete"]
+    needed = list(columns) + ["complete"]
     if any(c in DROP_COLUMNS for c in columns):
         needed.append("first_drop_complete")
     return read_rows(path, needed)

@@ -216,6 +216,7 @@ rule paper:
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
         how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk
+        how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/tables.smk
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:

@@ -1,7 +1,7 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, and theory.
 
 localrules: aggregate, aggregate_study, compare, reference_check, flutter, publish_table, publish_results,
-    ensemble_table, envelope, paper_how_sure
+    ensemble_table, envelope, paper_how_sure, rule_scores
 
 
 ruleorder: aggregate_study > aggregate
@@ -93,6 +93,37 @@ rule reference_check:
         "{PYTHON} -m analysis compare {input.table} --reference {input.reference}"
         " --tolerance {params.tolerance} --min-within {params.min_within} --ratchet {params.known} > {log} 2>&1"
         " && cp {log} {output}"
+
+
+def rule_score_points():
+    """(sweep, {name: point}) of the rule scores: the published cells at H/64 with the default seed,
+    i.e. the runs of the check sweep, taken from the ensemble sweep when the paper has one (its
+    seed-1 runs are the same points, so `all` runs nothing twice)."""
+    sweep = config["paper"].get("envelope", {}).get("ensemble") or config["reference"]["check_sweep"]
+    seed = config["defaults"]["seed"]
+    return sweep, {name: p for name, p in points(sweep).items() if p.get("seed", seed) == seed}
+
+
+RULE_SCORES_SWEEP, RULE_SCORES_POINTS = rule_score_points()
+RULE_SCORES = [f"results/{RULE_SCORES_SWEEP}/table/rule_scores.{ext}" for ext in ("csv", "md", "tex")]
+
+
+rule rule_scores:
+    """`python3 -m analysis score-rules`: Table 1 scored under every celerity rule of
+    docs/measurement-rule.md, side by side (the default rule marked), on the published cells at
+    H/64 with the default seed (`rule_score_points`)."""
+    input:
+        metrics=run_files(RULE_SCORES_SWEEP, "metrics.json", names=list(RULE_SCORES_POINTS)),
+        reference=repo_path(config["reference"]["table"]),
+    output: RULE_SCORES
+    params:
+        directory=f"results/{RULE_SCORES_SWEEP}/table",
+        tolerance=config["reference"]["tolerance"],
+        select=table_select(RULE_SCORES_POINTS),
+    log: f"results/{RULE_SCORES_SWEEP}/logs/rule_scores.log"
+    shell:
+        "{PYTHON} -m analysis score-rules {input.metrics} --reference {input.reference}"
+        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
 
 
 rule flutter:
@@ -220,13 +251,14 @@ rule fig_envelope:
 
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
                   "paper/generated/envelope.tex", "paper/generated/envelope.pdf",
-                  "paper/generated/phase_diagram_ensemble.pdf"]
+                  "paper/generated/phase_diagram_ensemble.pdf",
+                  "paper/generated/rule_scores.tex"]
 
 
 rule paper_how_sure:
     """The generated inputs of paper/how_sure.tex: its numbers (paper/make_how_sure.py), the
     ensemble and envelope tables, the envelope figure and the ensemble's phase diagram. Through
-    the paper, `all` runs the ensemble sweep and the variant sweeps."""
+    the paper, `all` runs the ensemble sweep and the variant sweeps. The rule scores: rule `rule_scores`."""
     input:
         script="paper/make_how_sure.py",
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
@@ -235,6 +267,7 @@ rule paper_how_sure:
         envelope_table="results/envelope/envelope.tex",
         figure="results/envelope/envelope.pdf",
         phase_diagram=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/figures/phase_diagram_ensemble.pdf",
+        rule_scores=RULE_SCORES[2],
     output: HOW_SURE_FILES
     log: "logs/paper_how_sure.log"
     shell:
@@ -243,4 +276,155 @@ rule paper_how_sure:
         " && cp {input.ensemble_table} paper/generated/ensemble.tex"
         " && cp {input.envelope_table} paper/generated/envelope.tex"
         " && cp {input.figure} paper/generated/envelope.pdf"
-        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf) > {log} 2>&1"
+        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf"
+        " && cp {input.rule_scores} paper/generated/rule_scores.tex) > {log} 2>&1"
+
+
+# --------------------------------------------------------------------------------------------------
+# How sure is Table 1, the limits (paper/how_sure.tex, config `paper.limits`): the mesh limit of every
+# published cell, the backward pulses against dt, the Fig. 3 timeline and the pulse counts across seeds.
+
+localrules: mesh_limit, timestep_limit, timeline, pulse_seeds, paper_how_sure_limits
+
+LIMITS = config["paper"].get("limits", {})
+MESH_LIMIT_TABLES = ("mesh_limit.csv", "mesh_limit.md", "mesh_limit.tex", "mesh_limit_summary.json")
+TIMESTEP_LIMIT_TABLES = ("timestep_limit.csv", "timestep_cells.csv", "timestep_limit.md", "timestep_limit.tex",
+                         "timestep_limit_summary.json")
+TIMELINE_TABLES = ("timeline.csv", "timeline.md", "timeline.tex", "timeline_summary.json")
+PULSE_SEEDS_TABLES = ("pulse_seeds.csv", "pulse_seeds.md", "pulse_seeds.tex", "pulse_seeds_summary.json")
+
+
+def metrics_table(sweep):
+    return f"results/{sweep}/table/all_metrics.csv"
+
+
+def timeline_runs(label):
+    """The run folders of the timeline cell in the sweeps of one set (config paper.limits.timeline)."""
+    cell = LIMITS["timeline"]["cell"]
+    folders = [run_dir(sweep, name) for sweep in LIMITS["timeline"]["sets"][label]
+               for name in study_sweeps.find_points(points(sweep), cell)]
+    if not folders:
+        raise ValueError(f"paper.limits.timeline.sets.{label}: no run of {cell} in {LIMITS['timeline']['sets'][label]}")
+    return folders
+
+
+def timeline_set_options(wildcards):
+    return " ".join(f"--set {shlex.quote(label)} " + " ".join(timeline_runs(label))
+                    for label in LIMITS["timeline"]["sets"])
+
+
+rule mesh_limit:
+    """`python3 -m analysis.mesh_limit`: every published cell against 1/N, its Richardson limit
+    (docs/mesh-limit.md) and the verdict on whether the published values sit at it."""
+    input:
+        tables=[metrics_table(sweep) for sweep in LIMITS.get("meshes", {}).values()],
+        reference=repo_path(config["reference"]["table"]),
+    output: [f"results/limits/{name}" for name in MESH_LIMIT_TABLES]
+    params:
+        meshes=" ".join(f"--mesh {n}={metrics_table(sweep)}" for n, sweep in LIMITS.get("meshes", {}).items()),
+        tolerance=config["reference"]["tolerance"],
+    log: "results/limits/logs/mesh_limit.log"
+    shell:
+        "{PYTHON} -m analysis.mesh_limit {params.meshes} --reference {input.reference}"
+        " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
+
+
+rule timestep_limit:
+    """`python3 -m analysis.timestep_limit`: the backward cells against dt c_s, with the seed spread
+    and Adams' steady wave; does a dt -> 0 limit exist (docs/supersonic-backward.md section 6)."""
+    input:
+        tables=[metrics_table(sweep) for sweep in LIMITS.get("timestep", [])],
+        reference=repo_path(config["reference"]["table"]),
+    output: [f"results/limits/{name}" for name in TIMESTEP_LIMIT_TABLES]
+    params: tolerance=config["reference"]["tolerance"]
+    log: "results/limits/logs/timestep_limit.log"
+    shell:
+        "{PYTHON} -m analysis.timestep_limit {input.tables} --reference {input.reference}"
+        " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
+
+
+rule timeline:
+    """`python3 -m analysis.timeline`: the Fig. 3 events of the timeline cell across seeds and meshes."""
+    input:
+        metrics=lambda wc: [f"{d}/metrics.json" for label in LIMITS["timeline"]["sets"] for d in timeline_runs(label)],
+        runs=lambda wc: [f"{d}/run.h5" for label in LIMITS["timeline"]["sets"] for d in timeline_runs(label)],
+    output: [f"results/limits/{name}" for name in TIMELINE_TABLES]
+    params: sets=timeline_set_options
+    log: "results/limits/logs/timeline.log"
+    shell: "{PYTHON} -m analysis.timeline {params.sets} -o results/limits > {log} 2>&1"
+
+
+rule pulse_seeds:
+    """`python3 -m analysis.pulse_seeds`: major-pulse counts per lambda/H across seeds, later drops."""
+    input: [metrics_table(sweep) for sweep in LIMITS.get("pulses", [])]
+    output: [f"results/limits/{name}" for name in PULSE_SEEDS_TABLES]
+    params: cell=lambda wc: f"{LIMITS['timeline']['cell']['nu']} {LIMITS['timeline']['cell']['f']}"
+    log: "results/limits/logs/pulse_seeds.log"
+    shell: "{PYTHON} -m analysis.pulse_seeds {input} --cell {params.cell} -o results/limits > {log} 2>&1"
+
+
+rule fig_mesh_limit:
+    """Deviation from the published celerity against 1/N, one line per cell, by group."""
+    input:
+        script=repo_path("figures/mesh_limit.py"),
+        table="results/limits/mesh_limit.csv",
+    output: multiext("results/limits/mesh_limit", *FIGURE_EXTS)
+    params: tolerance=config["reference"]["tolerance"]
+    log: "results/limits/logs/fig_mesh_limit.log"
+    shell:
+        "{PYTHON} {input.script} {input.table} --tolerance {params.tolerance}"
+        " --out results/limits/mesh_limit > {log} 2>&1"
+
+
+rule fig_timestep_backward:
+    """The backward cells' celerity against dt c_s: seed mean and range, Adams, published."""
+    input:
+        script=repo_path("figures/timestep_backward.py"),
+        table="results/limits/timestep_limit.csv",
+    output: multiext("results/limits/timestep_backward", *FIGURE_EXTS)
+    log: "results/limits/logs/fig_timestep_backward.log"
+    shell: "{PYTHON} {input.script} {input.table} --out results/limits/timestep_backward > {log} 2>&1"
+
+
+BACKWARD_CELERITY_SWEEPS = ("table1_h32", "variant_seed2", "table1", "table1_h128", "timestep", "variant_dt1",
+                            "timestep_backward")
+
+
+rule fig_backward_celerity:
+    """Backward supersonic celerity against f: Adams' steady wave, the paper, our series (mesh, dt)."""
+    input:
+        script=repo_path("figures/backward_celerity.py"),
+        reference=repo_path(config["reference"]["table"]),
+        tables=[metrics_table(sweep) for sweep in BACKWARD_CELERITY_SWEEPS],
+    output: multiext("results/limits/backward_celerity", *FIGURE_EXTS)
+    params: tables=" ".join(f"--table {sweep}={metrics_table(sweep)}" for sweep in BACKWARD_CELERITY_SWEEPS)
+    log: "results/limits/logs/fig_backward_celerity.log"
+    shell:
+        "{PYTHON} {input.script} {params.tables} --reference {input.reference}"
+        " --out results/limits > {log} 2>&1"
+
+
+HOW_SURE_LIMITS_FILES = ["paper/generated/how_sure_limits.tex", "paper/generated/mesh_limit.tex",
+                         "paper/generated/timestep_limit.tex", "paper/generated/timeline.tex",
+                         "paper/generated/pulse_seeds.tex", "paper/generated/mesh_limit.pdf",
+                         "paper/generated/timestep_backward.pdf", "paper/generated/backward_celerity.pdf"]
+
+
+rule paper_how_sure_limits:
+    """The generated inputs of the limits subsections of paper/how_sure.tex: their numbers and
+    sentences (paper/make_how_sure_limits.py), tables and figures."""
+    input:
+        script="paper/make_how_sure_limits.py",
+        mesh="results/limits/mesh_limit_summary.json",
+        timestep="results/limits/timestep_limit_summary.json",
+        timeline="results/limits/timeline_summary.json",
+        pulses="results/limits/pulse_seeds_summary.json",
+        tables=[f"results/limits/{name}" for name in ("mesh_limit.tex", "timestep_limit.tex", "timeline.tex",
+                                                      "pulse_seeds.tex")],
+        figures=[f"results/limits/{name}.pdf" for name in ("mesh_limit", "timestep_backward", "backward_celerity")],
+    output: HOW_SURE_LIMITS_FILES
+    log: "logs/paper_how_sure_limits.log"
+    shell:
+        "({PYTHON} {input.script} --mesh {input.mesh} --timestep {input.timestep}"
+        " --timeline {input.timeline} --pulses {input.pulses} -o paper/generated/how_sure_limits.tex"
+        " && cp {input.tables} {input.figures} paper/generated/) > {log} 2>&1"

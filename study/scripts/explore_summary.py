@@ -73,7 +73,7 @@ def render(metrics: dict, figures: list[str]) -> str:
     if metrics.get("celerity") is not None and c_s:
         rows += f"<tr><th>c_p / c_s</th><td>{metrics['celerity'] / c_s:.4g}</td></tr>"
     warning = ""
-    if not metrics.get("run_complete", True):
+    if not metrics.get("complete", True):
         warning = (f"<p class='warn'>The run did not complete ({html.escape(str(metrics.get('end_reason')))}):"
                    " its measurements cover only the simulated time.</p>")
     phase, *rest = figures

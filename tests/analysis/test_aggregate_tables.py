@@ -14,12 +14,12 @@ REFERENCE = [ReferenceCell(nu=0.2, f=1.5, celerity=2.0),
 
 def metrics(nu, f, celerity, **extra):
     return {"nu": nu, "f": f, "celerity": celerity, "category": "intersonic_opening", "regime": "intersonic",
-            "opening": True, "inversion": False, "min_T_over_N": 0.5, "run_complete": True,
+            "opening": True, "inversion": False, "min_T_over_N": 0.5, "complete": True,
             "end_reason": "stop_after_opening", **extra}
 
 
 def test_a_run_that_did_not_complete_shows_its_end_reason_in_every_table():
-    runs = [metrics(0.2, 1.5, 2.1, run_complete=False, end_reason="contact_not_converged"),
+    runs = [metrics(0.2, 1.5, 2.1, complete=False, end_reason="contact_not_converged"),
             metrics(0.0, 1.5, 1.0)]
     files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
     csv_rows = files["table1.csv"].splitlines()
@@ -76,7 +76,7 @@ def test_the_tables_read_back_as_written(tmp_path):
     from analysis.errors import InputError
     from analysis.table_csv import read_table
 
-    runs = [metrics(0.2, 1.5, 2.1, run_complete=False, end_reason="contact_not_converged", c_s=0.7)]
+    runs = [metrics(0.2, 1.5, 2.1, complete=False, end_reason="contact_not_converged", c_s=0.7)]
     files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
     (tmp_path / "table1.csv").write_text(files["table1.csv"])
     rows = read_table(tmp_path / "table1.csv", ("nu", "celerity", "within_tol", "end_reason"))

@@ -42,7 +42,7 @@ def precursor_then_opening_pulse():
 
 def test_precursor_is_localization_and_the_opening_pulse_is_opening_pulse():
     results, localization, opened, d = measure_all(precursor_then_opening_pulse())
-    assert results["localization"].celerity == localization.celerity  # today's rule, unchanged
+    assert results["localization"].celerity == localization.celerity  # the first rule, unchanged
     assert results["localization"].celerity == pytest.approx(0.98, rel=5e-3)
     pulse = results["opening_pulse"]
     assert pulse.reason == "ok"
@@ -134,14 +134,14 @@ def test_opening_outside_every_major_pulse_is_no_opening_pulse():
 
 def test_every_metrics_file_carries_every_rule(run_file):
     metrics = measure_run(load_run(run_file(paper_case())))
-    assert metrics["celerity_rule_default"] == "localization"
+    assert metrics["celerity_rule_default"] == "opening_pulse" == rules.DEFAULT_RULE
     for name in rules.RULES:
         for suffix in ("", "_window", "_deceleration", "_reason"):
             assert f"celerity_rule_{name}{suffix}" in metrics
-    assert metrics["celerity"] == metrics["celerity_rule_localization"]
-    assert metrics["celerity_window"] == metrics["celerity_rule_localization_window"]
+    assert metrics["celerity"] == metrics["celerity_rule_opening_pulse"]
+    assert metrics["celerity_window"] == metrics["celerity_rule_opening_pulse_window"]
     # The paper case's pulse is the one that opens: opening_pulse coincides with localization.
-    assert metrics["celerity_rule_opening_pulse"] == metrics["celerity"]
+    assert metrics["celerity_rule_localization"] == metrics["celerity"]
     assert metrics["celerity_rule_opening_pulse_from_opening"] == pytest.approx(0.882, rel=5e-3)
     json.dumps(metrics, allow_nan=False)
 
@@ -153,9 +153,9 @@ def test_every_metrics_file_carries_every_rule(run_file):
 def rule_metrics_file(tmp_path, name, nu, f, by_rule, **changes):
     """A metrics file of a (nu, f) cell with the given rule celerities (others undefined)."""
     c_s, c_l = wave_speeds(nu)
-    metrics = {"nu": nu, "f": f, "celerity": by_rule.get("localization"), "c_s": c_s, "c_l": c_l,
+    metrics = {"nu": nu, "f": f, "celerity": by_rule.get("opening_pulse"), "c_s": c_s, "c_l": c_l,
                "opening": True, "complete": True, "non_physical": False,
-               "sampling_too_coarse": False, "celerity_rule_default": "localization"}
+               "sampling_too_coarse": False, "celerity_rule_default": "opening_pulse"}
     for rule in rules.RULES:
         metrics[f"celerity_rule_{rule}"] = by_rule.get(rule)
         metrics[f"celerity_rule_{rule}_reason"] = "ok" if rule in by_rule else "empty_window"
@@ -195,7 +195,7 @@ def test_score_rules_counts_sign_regime_tolerance_per_rule(tmp_path):
                           opening=False),
     ]
     s = scored(tmp_path, files)
-    assert s["localization"]["default"] and not s["opening_pulse"]["default"]
+    assert s["opening_pulse"]["default"] and not s["localization"]["default"]
     loc, pulse, late = s["localization"], s["opening_pulse"], s["late"]
     assert (loc["cells_published"], loc["cells_measured"], loc["cells_excluded"]) == (38, 2, 36)
     assert (loc["sign_matches"], loc["regime_matches"], loc["within_tolerance"], loc["reproduced"]) == (1, 2, 1, 1)
@@ -216,16 +216,41 @@ def test_score_rules_flagged_runs_are_not_reproduced_under_any_rule(tmp_path, fl
 
 
 def test_score_rules_command_prints_and_writes_csv(tmp_path):
-    files = [rule_metrics_file(tmp_path, "a", 0.2, 1.5, {"localization": 0.90, "late": 0.79})]
+    files = [rule_metrics_file(tmp_path, "a", 0.2, 1.5, {"opening_pulse": 0.90, "late": 0.79})]
     out = tmp_path / "out" / "scores.csv"
     result = run_cli("score-rules", *files, "--tolerance", "0.05", "--out", out)
     assert result.returncode == 0, result.stderr
-    assert "localization *" in result.stdout
+    assert "opening_pulse *" in result.stdout and "localization *" not in result.stdout
     lines = out.read_text().splitlines()
     assert lines[0].startswith("rule,default,cells_published,cells_measured")
     assert [line.split(",")[0] for line in lines[1:]] == list(rules.RULES)
-    assert lines[1].split(",")[1:9] == ["true", "38", "1", "37", "1", "1", "1", "1"]
+    assert lines[2].split(",")[1:9] == ["true", "38", "1", "37", "1", "1", "1", "1"]
+    assert lines[1].split(",")[1:4] == ["false", "38", "0"]
     assert [p.name for p in out.parent.iterdir()] == ["scores.csv"]  # no temporary left
+
+
+def test_score_rules_writes_the_report_table_with_the_default_marked(tmp_path):
+    files = [rule_metrics_file(tmp_path, "a", 0.2, 1.5, {"opening_pulse": 0.90, "late": 0.79}),
+             rule_metrics_file(tmp_path, "b", 0.45, 1.0, {"opening_pulse": -2.40, "localization": 2.5})]
+    out = tmp_path / "table"
+    result = run_cli("score-rules", *files, "--tolerance", "0.05", "-o", out)
+    assert result.returncode == 0, result.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["rule_scores.csv", "rule_scores.md", "rule_scores.tex"]
+    from analysis.table_csv import read_table
+    rows = {r["rule"]: r for r in read_table(out / "rule_scores.csv", ("rule", "default", "reproduced"))}
+    assert [r["default"] for r in rows.values()] == [rule == "opening_pulse" for rule in rules.RULES]
+    # opening_pulse: 0.90 vs 0.882 (+2.0 %) and -2.40 vs -2.523 (-4.9 %): both within 5 %.
+    assert rows["opening_pulse"]["reproduced"] == 2
+    assert rows["opening_pulse"]["median_abs_deviation"] == pytest.approx(
+        0.5 * ((0.90 - 0.882) / 0.882 + (2.523 - 2.40) / 2.523), rel=1e-5)
+    tex = (out / "rule_scores.tex").read_text()
+    marked = [line for line in tex.splitlines() if "(default)" in line]
+    assert len(marked) == 1 and marked[0].startswith(r"\texttt{opening\_pulse} (default)")
+    # measured, excluded, sign, regime, within, reproduced, median |dev| (%) of the default rule.
+    assert marked[0].split(" & ")[1:] == ["2", "36", "2", "2", "2", "2", r"3.5 \\"]
+    assert tex.count(r"\\") == len(rules.RULES) + 1 and r"\bottomrule" in tex
+    md = (out / "rule_scores.md").read_text()
+    assert md.count("(default)") == 1 and "| opening_pulse (default) | 38 | 2 | 36 | 2 | 2 | 2 | 2 | 3.5 |" in md
 
 
 def test_score_rules_refuses_metrics_without_rules_and_writes_nothing(tmp_path):
@@ -236,7 +261,7 @@ def test_score_rules_refuses_metrics_without_rules_and_writes_nothing(tmp_path):
     assert result.returncode == 2
     assert "old.json" in result.stderr and "celerity_rule_localization" in result.stderr
     assert "Traceback" not in result.stderr and not out.exists()
-    files = [rule_metrics_file(tmp_path, n, 0.2, 1.5, {"localization": 0.9}) for n in "ab"]
+    files = [rule_metrics_file(tmp_path, n, 0.2, 1.5, {"opening_pulse": 0.9}) for n in "ab"]
     result = run_cli("score-rules", *files, "--out", out)
     assert result.returncode == 2 and "two metrics for the cell" in result.stderr
     assert not out.exists()

@@ -75,7 +75,7 @@ def test_paper_case(run_file):
 @pytest.mark.parametrize("scenario, category, celerity", [
     (paper_case(), "intersonic_opening_inversion", 0.882),
     (paper_case(ratio_knots=[(0, 1.425), (740, 1.5), (900, 0.4), (1500, 1.0)]), "intersonic_opening", 0.882),
-    (Scenario(pulses=[Pulse(0.85)]), "no_opening", 0.85),
+    (Scenario(pulses=[Pulse(0.85)]), "no_opening", None),  # fronts, but no opening pulse
     (Scenario(nu=0.49, f=0.5, pulses=[Pulse(-5.25, opening=0.02, opening_start=850.0)]),
      "supersonic_backward_opening", -5.25),
     (Scenario(nu=0.45, f=1.0, pulses=[Pulse(-2.523, opening=0.02, opening_start=850.0)]),
@@ -99,15 +99,16 @@ def test_categories(run_file, scenario, category, celerity):
 
 def test_regime_of_the_measured_celerity(run_file):
     c_s, c_l = wave_speeds(0.45)
-    m = measure(run_file, Scenario(nu=0.45, f=1.0, pulses=[Pulse(-2.523)]))
+    m = measure(run_file, Scenario(nu=0.45, f=1.0, pulses=[Pulse(-2.523, opening=0.02, opening_start=850.0)]))
     assert abs(m["celerity"]) > c_l and m["regime"] == "supersonic" and m["below_sqrt2_cs"] is False
     assert m["c_s"] == pytest.approx(c_s) and m["c_l"] == pytest.approx(c_l)
 
 
 def test_two_pulses_in_lambda_4H(run_file):
-    m = measure(run_file, Scenario(lambda_over_H=4.0, pulses=[Pulse(0.88, x_front=10.0),
-                                                              Pulse(0.88, x_front=55.0)]))
-    assert m["pulse_count"] == 2 and m["pulse_count_field"] == "slip_velocity"
+    opens = dict(opening=0.01, opening_start=850.0)
+    m = measure(run_file, Scenario(lambda_over_H=4.0, pulses=[Pulse(0.88, x_front=10.0, **opens),
+                                                              Pulse(0.88, x_front=55.0, **opens)]))
+    assert m["pulse_count"] == 2 and m["pulse_count_field"] == "opening"
     assert m["pulse_spacing"] == pytest.approx(50.0, abs=5.1)  # gaps of 45 and 55 m
     assert m["pulse_count_all"] == 2
     assert m["celerity_n_fronts"] == 2 and m["celerity"] == pytest.approx(0.88, rel=5e-3)
@@ -129,7 +130,7 @@ def test_later_drops(run_file):
 
 
 def test_settings_change_the_measurement(run_file):
-    path = run_file(Scenario(pulses=[Pulse(0.882, t_end=880.0)]))
+    path = run_file(Scenario(pulses=[Pulse(0.882, t_end=880.0, opening=0.01, opening_start=820.0)]))
     run = load_run(path)
     assert measure_run(run)["celerity"] is None  # lives 80 s < major_duration 100 s
     assert measure_run(run, Settings(major_duration=60.0))["celerity"] == pytest.approx(0.882, rel=5e-3)

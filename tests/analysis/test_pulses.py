@@ -58,3 +58,12 @@ def test_moving_frame_piles_up_a_steady_pulse():
     frozen = bump(30.0, 1e-3, np.zeros(1))[0]
     dt = T[1] - T[0]
     assert accumulated == pytest.approx(np.where(frozen > 1e-6, frozen, 0.0) * dt * T.size, rel=1e-12, abs=1e-15)
+
+
+def test_a_spike_narrower_than_a_pulse_is_no_major_pulse():
+    # Opening at one node only, moving with the frame: above the fraction at a single node, which
+    # slipping_mask's minimum width drops (seen on an H/32 run at nu = 0, f = 1.15, dt c_s = 1 m).
+    u = np.zeros((T.size, N))
+    u[:, 0] = 5e-3
+    result = pulses.major_pulses(X, T, u, 2.5e-4, 0.0)
+    assert result.count == 0 and math.isnan(result.spacing)

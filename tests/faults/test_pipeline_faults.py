@@ -99,9 +99,9 @@ def test_sigterm_during_a_sweep_leaves_no_result_and_the_rerun_recomputes(tmp_pa
             end_reason = end_reason.decode() if isinstance(end_reason, bytes) else str(end_reason)
             assert end_reason in ("t_end", "stop_after_opening")
         metrics = json.loads((directory / "metrics.json").read_text())
-        assert metrics["run_complete"] is True and metrics["end_reason"] != "interrupted"
+        assert metrics["complete"] is True and metrics["end_reason"] != "interrupted"
     table = work / "results" / SWEEP / "table"
     with open(table / "all_metrics.csv") as stream:
         rows = list(csv.DictReader(stream))
-    assert len(rows) == 2 and all(r["run_complete"] == "true" for r in rows)
+    assert len(rows) == 2 and all(r["complete"] == "true" for r in rows)
     assert "interrupted" not in (table / "table1.csv").read_text()

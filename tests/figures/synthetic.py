@@ -169,7 +169,7 @@ def metrics_rows():
                  dissipative_friction_before_opening=0.9 * f,
                  friction_energy_share_opening=0.5 if opening else None,
                  dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
-                 below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, run_complete=True,
+                 below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, complete=True,
                  pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
                  localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
                  first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
@@ -177,6 +177,9 @@ def metrics_rows():
                  later_drops_start_T_over_N_median=0.9 * f, n_drops=2, pulse_count_all=count + 1,
                  # the slowest shear rate stops during its second drop; the first one is complete
                  n_complete_drops=1 if r["V0_over_cs"] == 1e-6 else 2)
+        if not opening:  # the default rule measures the pulse that opens: none here
+            r.update(celerity=None, regime=None, below_sqrt2_cs=None, pulse_count=None, pulse_spacing=None,
+                     pulse_spacing_theory=math.nan)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
         # What `analysis aggregate` adds to all_metrics.csv.
         r.update(aggregate.derived_columns(r, flutter_boundary()))

@@ -10,6 +10,7 @@ import pytest
 import synthetic
 from figure_support import PAPER, command
 from how_sure_inputs import write_generated, write_tables
+from how_sure_limits_inputs import write_generated_limits, write_limits
 
 sys.path.insert(0, str(PAPER))
 from numbers_tex import MACRO_NAMES  # noqa: E402
@@ -174,6 +175,7 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
             args = ["make_sweep_table.py", f"all={data / 'all_metrics.csv'}", "--columns", *table["columns"]]
         assert command(PAPER / args[0], *args[1:], "-o", gen / f"{name}.tex").returncode == 0, name
     write_generated(write_tables(tmp_path), gen)  # paper/how_sure.tex's inputs (tests/figures/how_sure_inputs.py)
+    write_generated_limits(write_limits(tmp_path / "limits"), gen)  # its limits subsections (how_sure_limits_inputs.py)
     build(paper)
     missing = subprocess.run(["make", "-s", "-C", str(paper), "missing"], capture_output=True,
                              text=True)

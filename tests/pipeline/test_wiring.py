@@ -40,7 +40,8 @@ def test_quick_is_the_default_target(workdir):
 # method and with one modelling choice changed each (the method-variant table of the reproduction report).
 SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density": 3, "long": 1, "snapshots": 1,
                "table1_h32": 38, "variant_full": 38, "variant_reduced_pure": 38, "variant_contact_end": 38,
-               "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 14,
+               "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 38,
+               "table1_h256": 3, "timestep_backward": 2 * 4 * 3, "period_ensemble": 3 * 4, "long_ensemble": 4,
                "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3,
                "table1_ensemble": 38 * 8}
 
@@ -78,6 +79,10 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
     assert counts["ensemble_table"] == 1 and counts["fig_phase_diagram_ensemble"] == 1
     assert counts["envelope"] == 1 and counts["fig_envelope"] == 1 and counts["paper_how_sure"] == 1
+    # Its limits: mesh limit, backward pulses against dt, Fig. 3 timeline, pulse counts across seeds.
+    for rule in ("mesh_limit", "timestep_limit", "timeline", "pulse_seeds", "fig_mesh_limit", "fig_timestep_backward",
+                 "fig_backward_celerity", "paper_how_sure_limits"):
+        assert counts[rule] == 1, rule
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
 
@@ -156,4 +161,4 @@ def test_publish_results_writes_every_committed_table():
     result, counts = dry(REPO, "publish_results", "--forceall")
     copies = {fields["output"] for rule, fields in jobs(result.stdout) if rule == "publish_table"}
     committed = {str(path) for path in (REPO / "study" / "results").glob("*/*") if path.suffix in (".csv", ".json")}
-    assert copies == committed and counts["publish_table"] == len(committed) == 21 * 3
+    assert copies == committed and counts["publish_table"] == len(committed) == 25 * 3
