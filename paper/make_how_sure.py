@@ -8,11 +8,11 @@ Every macro is a number of those files, formatted; a missing key or an unknown g
 that names the file. Deviations are printed in per cent with their sign.
 """
 import argparse
-import json
 import sys
 
 from table_io import write_atomically
 from numbers_tex import render  # noqa: E402
+from summary_json import get, read  # noqa: E402
 from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
 
 #: analysis.ensemble's systematic groups -> the macro stem of each.
@@ -23,24 +23,12 @@ FACTOR_STEMS = {"seed": "Seed", "mesh": "Mesh", "time step": "TimeStep", "integr
                 "contact weighting": "Contact"}
 
 
-def read(path):
-    try:
-        with open(path) as stream:
-            return json.load(stream)
-    except (OSError, json.JSONDecodeError) as err:
-        raise InputError(f"{path}: cannot read ({err})") from None
-
 
 def pct(value, signed=True):
     if value is None:
         return "--"
     return f"{100 * value:+.1f}" if signed else f"{100 * value:.1f}"
 
-
-def get(data, key, path):
-    if key not in data:
-        raise InputError(f"{path}: no key '{key}'")
-    return data[key]
 
 
 def ensemble_macros(summary, path):

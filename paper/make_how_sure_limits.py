@@ -10,11 +10,11 @@ Every macro (prefix `lim`) is a value of those files, formatted; the sentences a
 analysis modules from their counts. A missing key is an error that names the file.
 """
 import argparse
-import json
 import sys
 
 from table_io import write_atomically
 from numbers_tex import render  # noqa: E402
+from summary_json import get, read  # noqa: E402
 from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
 
 #: analysis.timeline's events -> macro stem.
@@ -29,18 +29,6 @@ DT_STATUS = {"within seed spread": "WithinSpread", "converging": "Converging", "
              "another regime": "OtherRegime", "too few time steps": "TooFew"}
 
 
-def read(path):
-    try:
-        with open(path) as stream:
-            return json.load(stream)
-    except (OSError, json.JSONDecodeError) as err:
-        raise InputError(f"{path}: cannot read ({err})") from None
-
-
-def get(data, key, path):
-    if key not in data:
-        raise InputError(f"{path}: no key '{key}'")
-    return data[key]
 
 
 def seconds(value):
