@@ -10,6 +10,7 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
+#include "same_run_support.hpp"
 #include "test_support.hpp"
 #include "time/hht.hpp"
 
@@ -114,34 +115,7 @@ TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
 // numerics.linear_solver: both solvers give the same discrete run to round-off. Compared before the
 // slip onset (the stick phase is not chaotic; after onset round-off differences grow).
 TEST(BlockCirculantSolver, SameRunAsCholmodBeforeSlipOnset) {
-  RunRecord runs[2];
-  const char* kinds[2] = {"circulant", "cholmod"};
-  for (int s = 0; s < 2; ++s)
-    runs[s] = simulate(LayerModel(testing::make_config({{"mesh", {{"elements_per_H", 8}}},
-                                                        {"time", {{"t_end", 600.0}}},
-                                                        {"numerics", {{"linear_solver", kinds[s]}}}})));
-  const auto &a = runs[0], &b = runs[1];
-  ASSERT_EQ(a.global.t.size(), b.global.t.size());
-  EXPECT_NEAR(a.u_x_preshear, b.u_x_preshear, 1e-12 * std::fabs(b.u_x_preshear));
-  const auto max_relative = [](const std::vector<double>& x, const std::vector<double>& y) {
-    double scale = 0, diff = 0;
-    for (size_t n = 0; n < x.size(); ++n) {
-      scale = std::max(scale, std::fabs(y[n]));
-      diff = std::max(diff, std::fabs(x[n] - y[n]));
-    }
-    return scale > 0 ? diff / scale : diff;
-  };
-  EXPECT_LE(max_relative(a.global.T, b.global.T), 1e-10);
-  EXPECT_LE(max_relative(a.global.N, b.global.N), 1e-10);
-  EXPECT_LE(max_relative(a.global.energy_elastic, b.global.energy_elastic), 1e-10);
-  EXPECT_LE(max_relative(a.global.energy_kinetic, b.global.energy_kinetic), 1e-8);
-  // Sticking nodes only move by the contact tolerance: compare slip with the preload displacement |Uy|.
-  double max_slip_difference = 0;
-  for (size_t n = 0; n < a.interface.slip.data.size(); ++n)
-    max_slip_difference = std::max(max_slip_difference, std::fabs(a.interface.slip.data[n] - b.interface.slip.data[n]));
-  EXPECT_LE(max_slip_difference, 1e-10 * 0.025);
-  EXPECT_LE(max_relative(a.interface.normal_traction.data, b.interface.normal_traction.data), 1e-10);
-  EXPECT_EQ(a.interface.state.data, b.interface.state.data);
+  testing::expect_same_run_before_slip_onset("circulant", "cholmod");
 }
 
 }  // namespace
