@@ -3,7 +3,10 @@
 (`python3 -m analysis.ensemble`) and the envelope summary (`python3 -m analysis.envelope`).
 
     paper/make_how_sure.py --ensemble ensemble_summary.json --envelope envelope_summary.json -o OUT.tex
+        [--finer-ensemble ensemble_summary.json --finer-mesh 128]
 
+The optional finer ensemble (the same cells at a finer mesh, config paper.envelope.finer_ensemble)
+gives the same macros with the stem `ensFiner` instead of `ens`, and \ensFinerMesh.
 Every macro is a number of those files, formatted; a missing key or an unknown group is an error
 that names the file. Deviations are printed in per cent with their sign.
 """
@@ -31,25 +34,25 @@ def pct(value, signed=True):
 
 
 
-def ensemble_macros(summary, path):
+def ensemble_macros(summary, path, prefix="ens"):
     macros = {
-        "ensTolerancePercent": f"{100 * get(summary, 'tolerance', path):g}",
-        "ensCells": get(summary, "published_cells", path),
-        "ensRuns": get(summary, "runs", path),
-        "ensRunsWithFront": get(summary, "runs_with_front", path),
-        "ensSeedsMin": get(summary, "seeds_per_cell_min", path),
-        "ensSeedsMax": get(summary, "seeds_per_cell_max", path),
-        "ensWithinSeedOne": get(summary, "within_tol_seed1", path),
-        "ensWithinMean": get(summary, "within_tol_mean", path),
-        "ensFullAgreement": get(summary, "cells_full_agreement", path),
-        "ensSpreadMedian": pct(get(summary, "spread_rel_median", path), signed=False),
+        f"{prefix}TolerancePercent": f"{100 * get(summary, 'tolerance', path):g}",
+        f"{prefix}Cells": get(summary, "published_cells", path),
+        f"{prefix}Runs": get(summary, "runs", path),
+        f"{prefix}RunsWithFront": get(summary, "runs_with_front", path),
+        f"{prefix}SeedsMin": get(summary, "seeds_per_cell_min", path),
+        f"{prefix}SeedsMax": get(summary, "seeds_per_cell_max", path),
+        f"{prefix}WithinSeedOne": get(summary, "within_tol_seed1", path),
+        f"{prefix}WithinMean": get(summary, "within_tol_mean", path),
+        f"{prefix}FullAgreement": get(summary, "cells_full_agreement", path),
+        f"{prefix}SpreadMedian": pct(get(summary, "spread_rel_median", path), signed=False),
     }
     groups = get(summary, "groups", path)
     unknown = [name for name in groups if name not in GROUP_STEMS]
     if unknown:
         raise InputError(f"{path}: unknown group '{unknown[0]}' (known: {', '.join(GROUP_STEMS)})")
     for name, group in groups.items():
-        stem = "ens" + GROUP_STEMS[name]
+        stem = prefix + GROUP_STEMS[name]
         macros.update({
             f"{stem}Cells": group["cells"],
             f"{stem}MeanDev": pct(group["deviation_mean_rel_mean"]),
@@ -94,15 +97,24 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--ensemble", required=True, help="ensemble_summary.json")
     parser.add_argument("--envelope", required=True, help="envelope_summary.json")
+    parser.add_argument("--finer-ensemble", help="ensemble_summary.json of the same cells at a finer mesh")
+    parser.add_argument("--finer-mesh", type=int, help="its elements per H (with --finer-ensemble)")
     parser.add_argument("-o", "--output", required=True, help="the .tex file to write")
     args = parser.parse_args(argv)
+    if (args.finer_ensemble is None) != (args.finer_mesh is None):
+        parser.error("--finer-ensemble and --finer-mesh go together")
+    sources = [args.ensemble, args.envelope]
     try:
         macros = {**ensemble_macros(read(args.ensemble), args.ensemble),
                   **envelope_macros(read(args.envelope), args.envelope)}
+        if args.finer_ensemble:
+            macros.update(ensemble_macros(read(args.finer_ensemble), args.finer_ensemble, prefix="ensFiner"))
+            macros["ensFinerMesh"] = args.finer_mesh
+            sources.append(args.finer_ensemble)
     except InputError as err:
         print(f"error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(macros, [args.ensemble, args.envelope], script="paper/make_how_sure.py"))
+    write_atomically(args.output, render(macros, sources, script="paper/make_how_sure.py"))
     print(f"{len(macros)} macros -> {args.output}")
     return 0
 

@@ -249,6 +249,23 @@ rule fig_envelope:
         " --out results/envelope/envelope > {log} 2>&1"
 
 
+def finer_ensemble():
+    """config paper.envelope.finer_ensemble: (sweep, its one mesh H/h) or None."""
+    sweep = config["paper"].get("envelope", {}).get("finer_ensemble")
+    if sweep is None:
+        return None
+    meshes = {point["elements_per_H"] for point in points(sweep).values()}
+    if len(meshes) != 1:
+        raise ValueError(f"paper.envelope.finer_ensemble: sweep {sweep} has meshes {sorted(meshes)}, needs one")
+    return sweep, meshes.pop()
+
+
+def finer_ensemble_option(wildcards, input):
+    if not input.finer:
+        return ""
+    return f"--finer-ensemble {input.finer} --finer-mesh {finer_ensemble()[1]}"
+
+
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
                   "paper/generated/envelope.tex", "paper/generated/envelope.pdf",
                   "paper/generated/phase_diagram_ensemble.pdf",
@@ -258,7 +275,8 @@ HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensem
 rule paper_how_sure:
     """The generated inputs of paper/how_sure.tex: its numbers (paper/make_how_sure.py), the
     ensemble and envelope tables, the envelope figure and the ensemble's phase diagram. Through
-    the paper, `all` runs the ensemble sweep and the variant sweeps. The rule scores: rule `rule_scores`."""
+    the paper, `all` runs the ensemble sweeps (and the finer one) and the variant sweeps. The rule
+    scores: rule `rule_scores`."""
     input:
         script="paper/make_how_sure.py",
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
@@ -268,10 +286,12 @@ rule paper_how_sure:
         figure="results/envelope/envelope.pdf",
         phase_diagram=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/figures/phase_diagram_ensemble.pdf",
         rule_scores=RULE_SCORES[2],
+        finer=[f"results/{finer_ensemble()[0]}/table/ensemble_summary.json"] if finer_ensemble() else [],
     output: HOW_SURE_FILES
+    params: finer=finer_ensemble_option
     log: "logs/paper_how_sure.log"
     shell:
-        "({PYTHON} {input.script} --ensemble {input.ensemble} --envelope {input.envelope}"
+        "({PYTHON} {input.script} --ensemble {input.ensemble} --envelope {input.envelope} {params.finer}"
         " -o paper/generated/how_sure_numbers.tex"
         " && cp {input.ensemble_table} paper/generated/ensemble.tex"
         " && cp {input.envelope_table} paper/generated/envelope.tex"

@@ -43,7 +43,7 @@ SIMULATIONS = {"table1": 98, "shear_rate": 5, "period": 3, "mesh": 3, "density":
                "variant_dt1": 38, "variant_seed2": 38, "timestep": 9, "table1_h128": 38,
                "table1_h256": 3, "timestep_backward": 2 * 4 * 3, "period_ensemble": 3 * 4, "long_ensemble": 4,
                "regularized_fast": 3, "regularized_between": 3, "regularized_mid": 3, "regularized_slow": 3,
-               "table1_ensemble": 38 * 8}
+               "table1_ensemble": 38 * 8, "table1_h128_ensemble": 38 * 3}
 
 
 def jobs(output):
@@ -77,7 +77,8 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     # What the energy residual is: three small runs with the HHT dissipation booked, one generator.
     assert counts["energy_evidence_run"] == 3 and counts["paper_energy_evidence"] == 1
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
-    assert counts["ensemble_table"] == 1 and counts["fig_phase_diagram_ensemble"] == 1
+    # The ensemble at H/64 and the finer one (its summary only: paper.envelope.finer_ensemble).
+    assert counts["ensemble_table"] == 2 and counts["fig_phase_diagram_ensemble"] == 1
     assert counts["envelope"] == 1 and counts["fig_envelope"] == 1 and counts["paper_how_sure"] == 1
     # Its limits: mesh limit, backward pulses against dt, Fig. 3 timeline, pulse counts across seeds.
     for rule in ("mesh_limit", "timestep_limit", "timeline", "pulse_seeds", "fig_mesh_limit", "fig_timestep_backward",
