@@ -8,7 +8,10 @@ at all:
 - ``ensemble.csv``: one row per cell (runs equal in every ``CELL_KEYS`` column), ``ENSEMBLE_COLUMNS``:
   the celerity's mean, sample standard deviation, min and max over the runs with a celerity
   (``celerity_reason`` ok: the default rule found the major pulse that opens, its persistent
-  front; a run that does not open has none), ``n_front`` of ``n_runs``, the majority
+  front; a run that does not open has none) in the cell's direction (``cell_direction``: one wave
+  per cell, docs/measurement-rule.md), ``n_front`` of ``n_runs``, ``n_opposite`` the fronts
+  running the other way (another wave, not averaged; the mean is within tolerance only when
+  ``n_front`` > ``n_opposite``), the majority
   category and ``category_agreement`` (fraction of the runs in it), the run of the default seed
   (``celerity_seed1``), and against the published value: ``deviation_mean_rel`` =
   (mean - published) / |published|, ``deviation_seed1_rel``, ``spread_rel`` = std / |published|,
@@ -39,7 +42,7 @@ from analysis.table_csv import read_table
 CELL_KEYS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration",
              "dt_times_cs", "contact_weighting", "regularization", "pc_length", "pc_velocity")
 DEFAULT_SEED = 1
-ENSEMBLE_COLUMNS = ("nu", "f", "elements_per_H", "group", "n_runs", "n_front", "celerity_mean",
+ENSEMBLE_COLUMNS = ("nu", "f", "elements_per_H", "group", "n_runs", "n_front", "n_opposite", "celerity_mean",
                     "celerity_std", "celerity_min", "celerity_max", "celerity_seed1",
                     "majority_category", "category_agreement", "published", "deviation_mean_rel",
                     "deviation_seed1_rel", "spread_rel", "within_tol_mean", "within_tol_seed1")
@@ -87,10 +90,24 @@ def _has_front(row: dict[str, Any]) -> bool:
     return row["celerity_reason"] == "ok" and isinstance(c, float) and math.isfinite(c)
 
 
+def cell_direction(fronts: list[float], published: ReferenceCell | None) -> float:
+    """+1 or -1: the published direction, else the direction of most fronts (a tie: the first
+    front's, runs being in seed order). One wave per cell (docs/measurement-rule.md)."""
+    if published is not None:
+        return math.copysign(1.0, published.celerity)
+    forward = sum(c > 0 for c in fronts)
+    if 2 * forward != len(fronts):
+        return 1.0 if 2 * forward > len(fronts) else -1.0
+    return math.copysign(1.0, fronts[0])
+
+
 def cell_statistics(runs: list[dict[str, Any]], published: ReferenceCell | None,
                     tolerance: float) -> dict[str, Any]:
     """One ENSEMBLE_COLUMNS row for the runs of one cell (None where undefined)."""
-    fronts = [r["celerity"] for r in runs if _has_front(r)]
+    runs = sorted(runs, key=lambda r: r["seed"])
+    all_fronts = [r["celerity"] for r in runs if _has_front(r)]
+    direction = cell_direction(all_fronts, published) if all_fronts else 1.0
+    fronts = [c for c in all_fronts if c * direction > 0]
     categories = Counter(r["category"] for r in runs)
     majority, count = max(categories.items(), key=lambda item: (item[1], str(item[0])))
     seed1 = [r for r in runs if r["seed"] == DEFAULT_SEED]
@@ -99,6 +116,7 @@ def cell_statistics(runs: list[dict[str, Any]], published: ReferenceCell | None,
     row: dict[str, Any] = {column: None for column in ENSEMBLE_COLUMNS}
     row.update(nu=first["nu"], f=first["f"], elements_per_H=first.get("elements_per_H"),
                group=group_of(published), n_runs=len(runs), n_front=len(fronts),
+               n_opposite=len(all_fronts) - len(fronts),
                celerity_seed1=c_seed1, majority_category=majority,
                category_agreement=count / len(runs))
     if fronts:
@@ -110,7 +128,9 @@ def cell_statistics(runs: list[dict[str, Any]], published: ReferenceCell | None,
         row["published"] = published.celerity
         if row["celerity_mean"] is not None:
             row["deviation_mean_rel"] = (row["celerity_mean"] - published.celerity) / scale
-            row["within_tol_mean"] = abs(row["deviation_mean_rel"]) <= tolerance
+            # Most seeds producing the other wave is a category mismatch, never within.
+            row["within_tol_mean"] = (abs(row["deviation_mean_rel"]) <= tolerance
+                                      and row["n_front"] > row["n_opposite"])
         if c_seed1 is not None:
             row["deviation_seed1_rel"] = (c_seed1 - published.celerity) / scale
             row["within_tol_seed1"] = abs(row["deviation_seed1_rel"]) <= tolerance
@@ -160,7 +180,8 @@ def summarize(rows: list[dict[str, Any]], tolerance: float) -> dict[str, Any]:
         "cells": len(rows),
         "published_cells": len(published),
         "runs": sum(r["n_runs"] for r in rows),
-        "runs_with_front": sum(r["n_front"] for r in rows),
+        "runs_with_front": sum(r["n_front"] + r["n_opposite"] for r in rows),
+        "runs_opposite": sum(r["n_opposite"] for r in rows),
         "seeds_per_cell_min": min((r["n_runs"] for r in rows), default=0),
         "seeds_per_cell_max": max((r["n_runs"] for r in rows), default=0),
         "within_tol_seed1": sum(bool(r["within_tol_seed1"]) for r in published),
@@ -183,6 +204,12 @@ def _num(value: float | None, fmt: str = ".3f") -> str:
     return "" if value is None else f"{value:{fmt}}"
 
 
+def _fronts(row: dict[str, Any]) -> str:
+    """'n_front/n_runs', and the fronts running the other way when there are any."""
+    text = f"{row['n_front']}/{row['n_runs']}"
+    return text + (f" ({row['n_opposite']} opp.)" if row["n_opposite"] else "")
+
+
 def ensemble_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
     header = ["nu", "f", "group", "published", "seed 1", "mean", "std", "min", "max", "fronts",
               "majority category", "agreement", "dev. seed 1", "dev. mean"]
@@ -191,13 +218,14 @@ def ensemble_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> st
         lines.append("| " + " | ".join([
             f"{r['nu']:g}", f"{r['f']:.2f}", r["group"], _num(r["published"]), _num(r["celerity_seed1"]),
             _num(r["celerity_mean"]), _num(r["celerity_std"]), _num(r["celerity_min"]),
-            _num(r["celerity_max"]), f"{r['n_front']}/{r['n_runs']}", str(r["majority_category"]),
+            _num(r["celerity_max"]), _fronts(r), str(r["majority_category"]),
             f"{r['category_agreement']:.2f}", _pct(r["deviation_seed1_rel"]) + ("%" if r["deviation_seed1_rel"] is not None else ""),
             _pct(r["deviation_mean_rel"]) + ("%" if r["deviation_mean_rel"] is not None else "")]) + " |")
     n = summary["published_cells"]
     lines += ["", f"within {100 * summary['tolerance']:g}%: {summary['within_tol_seed1']}/{n} (seed 1), "
               f"{summary['within_tol_mean']}/{n} (ensemble mean); {summary['runs_with_front']}/"
-              f"{summary['runs']} runs with a celerity (an opening pulse)"]
+              f"{summary['runs']} runs with a celerity (an opening pulse), {summary['runs_opposite']} "
+              "of them against their cell's direction (not averaged)"]
     return "\n".join(lines) + "\n"
 
 
@@ -223,7 +251,7 @@ def ensemble_latex(rows: list[dict[str, Any]]) -> str:
             "--" if r["celerity_seed1"] is None else f"${r['celerity_seed1']:.3f}$",
             "--" if r["celerity_mean"] is None else f"${r['celerity_mean']:.3f}$",
             "--" if r["celerity_std"] is None else f"${r['celerity_std']:.3f}$", span,
-            f"{r['n_front']}/{r['n_runs']}", f"${r['category_agreement']:.2f}$",
+            _fronts(r), f"${r['category_agreement']:.2f}$",
             "" if r["deviation_mean_rel"] is None else f"${100 * r['deviation_mean_rel']:+.1f}$"]) + r" \\")
     out += [r"\bottomrule", r"\end{tabular}"]
     return "\n".join(out) + "\n"

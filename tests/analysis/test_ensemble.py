@@ -47,6 +47,33 @@ def test_deviation_is_relative_to_the_magnitude_of_a_backward_celerity():
     assert row["group"] == "supersonic backward"
 
 
+def test_a_front_against_the_published_direction_is_counted_not_averaged():
+    # nu = 0.45, f = 1.2 at H/128: two seeds backward, one forward (another wave).
+    runs = [run(0.45, 1.0, 1, -2.6, "supersonic_backward_opening"), run(0.45, 1.0, 2, 0.75),
+            run(0.45, 1.0, 3, -2.4, "supersonic_backward_opening")]
+    row = ensemble.cell_statistics(runs, REFERENCE[1], tolerance=0.05)
+    assert row["n_front"] == 2 and row["n_opposite"] == 1
+    assert row["celerity_mean"] == pytest.approx(-2.5) and row["celerity_max"] == -2.4
+    assert row["within_tol_mean"] is True
+
+
+def test_a_cell_where_most_seeds_run_the_other_way_is_never_within():
+    runs = [run(0.45, 1.0, 1, 0.7), run(0.45, 1.0, 2, 0.75),
+            run(0.45, 1.0, 3, -2.5, "supersonic_backward_opening")]
+    row = ensemble.cell_statistics(runs, REFERENCE[1], tolerance=0.05)
+    assert row["celerity_mean"] == -2.5 and row["deviation_mean_rel"] == 0.0
+    assert row["n_opposite"] == 2 and row["within_tol_mean"] is False
+
+
+def test_an_unpublished_cell_takes_the_direction_of_most_fronts_and_a_tie_the_lowest_seed():
+    most = [run(0.3, 0.7, 1, -2.0), run(0.3, 0.7, 2, 0.6), run(0.3, 0.7, 3, 0.8)]
+    row = ensemble.cell_statistics(most, None, tolerance=0.05)
+    assert row["celerity_mean"] == pytest.approx(0.7) and row["n_opposite"] == 1
+    tie = [run(0.3, 0.7, 2, 0.6), run(0.3, 0.7, 1, -2.0)]
+    row = ensemble.cell_statistics(tie, None, tolerance=0.05)
+    assert row["celerity_mean"] == -2.0 and row["n_opposite"] == 1
+
+
 def test_a_cell_without_any_front_has_no_celerity_statistics():
     runs = [run(0.0, 1.1, s, math.nan, "no_opening", "no_major_front") for s in (1, 2)]
     row = ensemble.cell_statistics(runs, REFERENCE[2], tolerance=0.05)
