@@ -34,6 +34,11 @@ def pct(value, signed=True):
 
 
 
+def seeds_range(low, high):
+    """'8' when every cell has 8 seeds, '3--8' otherwise."""
+    return f"{low}" if low == high else f"{low}--{high}"
+
+
 def ensemble_macros(summary, path, prefix="ens"):
     macros = {
         f"{prefix}TolerancePercent": f"{100 * get(summary, 'tolerance', path):g}",
@@ -43,6 +48,8 @@ def ensemble_macros(summary, path, prefix="ens"):
         f"{prefix}RunsOpposite": get(summary, "runs_opposite", path),
         f"{prefix}SeedsMin": get(summary, "seeds_per_cell_min", path),
         f"{prefix}SeedsMax": get(summary, "seeds_per_cell_max", path),
+        f"{prefix}SeedsRange": seeds_range(get(summary, "seeds_per_cell_min", path),
+                                           get(summary, "seeds_per_cell_max", path)),
         f"{prefix}WithinSeedOne": get(summary, "within_tol_seed1", path),
         f"{prefix}WithinMean": get(summary, "within_tol_mean", path),
         f"{prefix}FullAgreement": get(summary, "cells_full_agreement", path),
