@@ -26,8 +26,16 @@
 // the 2 x n_x loads. solve_free() keeps the spectrum X_m of the free solve and inverse-transforms only rows
 // 0 and 1; solve_loaded() adds G_m R_m and inverse-transforms all rows once: about one solve for both.
 //
-// Thread safety: solve() writes a mutable workspace, so one object must not be used by two threads at
-// once; build one solver per thread. Construction (FFTW planning) is serialized internally.
+// Threads: a solve runs on a team of `threads` OpenMP threads (numerics.threads; linalg/thread_team.hpp).
+// The FFTs go one mesh row j at a time (the rows 2 j, 2 j + 1) through one plan executed on each row's
+// own arrays (FFTW's new-array execute functions are thread-safe), rows shared out to the threads; the
+// sweeps share out the wavenumbers m (each m is its own system). Which thread does a row or an m never
+// changes how it is computed, so x is the same to the bit for any thread count. A solve has three
+// synchronization points (start, two barriers), so the team needs a free core per thread: on a busy
+// machine a barrier waits for a descheduled thread (libgomp spin-waits by default, 5-7x slower per step
+// on the shared 2-core machine of README "Threads for one run"; OMP_WAIT_POLICY=PASSIVE limits the loss).
+// Thread safety: solve() writes a mutable workspace, so one object must not be used by two callers at
+// once; build one solver per caller. Construction (FFTW planning) is serialized internally.
 //
 // Reproducibility: the FFT plans are made with FFTW_ESTIMATE | FFTW_NO_SIMD, so they depend on the sizes
 // alone (not on timing or on the CPU's vector extensions), and a solve is bitwise repeatable.
