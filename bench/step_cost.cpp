@@ -6,7 +6,9 @@
 // "correction" the loaded half plus the Newmark update.
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2 4 6] [--t-end 1300]
 //                                      [--nu 0.2] [--f 1.5] [--solver circulant|spectral|cholmod]
-//                                      [--stream FOLDER [--checkpoint-interval S]]
+//                                      [--threads N] [--stream FOLDER [--checkpoint-interval S]]
+// --threads sets numerics.threads (the thread team of one circulant/spectral solve; CHOLMOD's BLAS is
+// left as the process starts).
 // --stream writes the run as `slidewave run` does (RUN.partial.h5 streamed, checkpoints every S s of
 // wall time, RUN.h5 put in place; io/run_session.hpp) into FOLDER/bench_H<n>.h5, so that ms/step
 // includes the output; without it nothing is written (the rows stay in memory).
@@ -98,6 +100,7 @@ int main(int argc, char** argv) {
   std::string solver_name = "circulant";
   std::string stream_folder;
   double checkpoint_interval = 300;
+  int threads = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -112,6 +115,8 @@ int main(int argc, char** argv) {
       f = std::atof(argv[++i]);
     } else if (a == "--stream" && i + 1 < argc) {
       stream_folder = argv[++i];
+    } else if (a == "--threads" && i + 1 < argc && std::atoi(argv[i + 1]) >= 1) {
+      threads = std::atoi(argv[++i]);
     } else if (a == "--checkpoint-interval" && i + 1 < argc) {
       checkpoint_interval = std::atof(argv[++i]);
     } else if (a == "--solver" && i + 1 < argc && (solver_name = argv[++i], solver_name == "circulant" ||
@@ -120,15 +125,15 @@ int main(int argc, char** argv) {
                : solver_name == "spectral" ? slidewave::LinearSolverKind::spectral
                                            : slidewave::LinearSolverKind::circulant;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
   if (lambdas.empty()) lambdas = {2};
 
-  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, one core, output %s\n", nu, f, t_end,
-              solver_name.c_str(),
+  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, output %s\n", nu, f, t_end,
+              solver_name.c_str(), threads, threads == 1 ? "" : "s",
               stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
                                                              std::to_string(checkpoint_interval) + " s").c_str());
   std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %8s %8s\n", "H/h", "lam/H", "n_dofs",
@@ -143,6 +148,7 @@ int main(int argc, char** argv) {
     config.friction.f = f;
     config.time.t_end = t_end;
     config.numerics.linear_solver = solver;
+    config.numerics.threads = threads;
     const slidewave::LayerModel model(config);
     config.output.checkpoint_interval = checkpoint_interval;
     slidewave::StepProfile profile;

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   run->add_option("config", config_path, "run configuration (JSON)")->required();
   run->add_option("-o,--output", output_path, "output HDF5 file")->required();
   int threads = 0;
-  run->add_option("--threads", threads, "overrides numerics.threads (BLAS/OpenMP threads under CHOLMOD)");
+  run->add_option("--threads", threads, "overrides numerics.threads (threads of this run's linear solves)");
   bool resume = false;
   run->add_flag("--resume", resume,
                 "continue from RUN.checkpoint.h5 when it was written for this configuration and build "

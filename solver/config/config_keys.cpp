@@ -185,8 +185,11 @@ std::vector<ConfigKey> make_table() {
              "this chaotic problem amplifies after slip onset",
              [](auto& c) -> auto& { return c.numerics.linear_solver; }),
       integer("numerics", "threads", 1, 256,
-              "threads of the BLAS/OpenMP under CHOLMOD (the circulant path is serial); `slidewave run "
-              "--threads N` overrides it, and the resolved configuration in run.h5 records the count used",
+              "threads of one run: the OpenMP team that shares out the FFT rows and wavenumbers of the "
+              "`circulant` and `spectral` solves (results bitwise the same for any count), or the BLAS/OpenMP "
+              "threads under CHOLMOD; `slidewave run --threads N` overrides it, and the resolved configuration "
+              "in run.h5 records the count used. Needs a free core per thread: on a busy machine more threads are "
+              "slower (set OMP_WAIT_POLICY=PASSIVE there)",
               [](auto& c) -> auto& { return c.numerics.threads; }),
 
       integer("output", "interface_stride", 1, 1000000, "write interface fields every this many steps",

@@ -46,7 +46,7 @@ struct NumericsConfig {
   /// circulant: FFT in x (exact for the uniform periodic mesh, ~20x faster); cholmod: general sparse path;
   /// spectral: circulant with one K_eff pass per step (free solve and correction share one spectrum)
   LinearSolverKind linear_solver = LinearSolverKind::circulant;
-  int threads = 1;  ///< BLAS/OpenMP threads under CHOLMOD (`run --threads` overrides it)
+  int threads = 1;  ///< threads of one run: circulant/spectral solves, or CHOLMOD (`run --threads` overrides it)
 };
 struct OutputConfig {
   int interface_stride = 4;

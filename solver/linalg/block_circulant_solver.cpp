@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "linalg/thread_team.hpp"
+
 namespace slidewave {
 
 namespace {
@@ -132,7 +134,8 @@ std::mutex& planner_mutex() {
 }  // namespace
 
 struct BlockCirculantSolver::FftPlans {
-  // Per spectrum buffer (index Spectrum): its r2c and c2r plans and its data rows (real, imaginary).
+  // Per spectrum buffer (index Spectrum): its r2c and c2r plans of one mesh row j (the two rows r = 2 j + d),
+  // made on the buffer's first data row (real, imaginary) and executed row by row at offsets.
   fftw_plan forward[3] = {}, inverse[3] = {};
   double *re[3] = {}, *im[3] = {};
   ~FftPlans() {
@@ -151,8 +154,10 @@ bool BlockCirculantSolver::is_block_circulant(const Eigen::SparseMatrix<double>&
   return why.empty();
 }
 
-BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y)
-    : n_x_(n_x), n_y_(n_y), s_(2 * n_y), p_(0), n_modes_(n_x / 2 + 1), lanes_((n_x / 2 + 2) / 2 * 2) {
+BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, int threads)
+    : n_x_(n_x), n_y_(n_y), s_(2 * n_y), p_(0), n_modes_(n_x / 2 + 1), lanes_((n_x / 2 + 2) / 2 * 2), threads_(threads) {
+  if (threads < 1)
+    throw std::invalid_argument("BlockCirculantSolver: threads must be >= 1 (got " + std::to_string(threads) + ")");
   // 1. Structure and the blocks of slice 0.
   Blocks blocks;
   const std::string why = find_mismatch(A, n_x, n_y, &blocks);
@@ -204,7 +209,10 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   }
 
   // 3. Workspace and FFT plans. The transform runs along i (stride 2 in the DOF numbering) for each
-  //    (j, d); the spectrum is written split (real, imaginary) with m fastest, row r = 2 j + d.
+  //    (j, d); the spectrum is written split (real, imaginary) with m fastest, row r = 2 j + d. A plan
+  //    covers one mesh row j (d = 0, 1) and is executed once per j, so that the rows can be shared out
+  //    to threads with the same plan for any thread count (for every n_x from 3 to 1100 this gives the
+  //    bits of one plan over all rows, checked when the change was made).
   work_re_.assign(static_cast<std::size_t>(s + 2 * p) * lanes, 0.0);
   work_im_.assign(work_re_.size(), 0.0);
   kept_re_.assign(work_re_.size(), 0.0);
@@ -220,7 +228,7 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   plans_->im[kept] = kept_im_.data() + static_cast<std::size_t>(p) * lanes;
   plans_->re[contact] = contact_re_.data();
   plans_->im[contact] = contact_im_.data();
-  std::vector<double> data(static_cast<std::size_t>(size()), 0.0);
+  std::vector<double> data(2 * static_cast<std::size_t>(n_x), 0.0);
   // User vectors of any alignment are transformed in place of `data`, hence FFTW_UNALIGNED. The split
   // spectra are always the arrays of the plan: FFTW's new-array execution needs the same offset between
   // the real and imaginary arrays as at planning (FFTW manual, sec. 4.6), so each spectrum buffer has
@@ -231,18 +239,15 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   {
     std::lock_guard<std::mutex> lock(planner_mutex());
     const fftw_iodim forward_dim{n_x, 2, 1};
-    const fftw_iodim forward_loops[2] = {{n_y, 2 * n_x, 2 * lanes}, {2, 1, lanes}};
+    const fftw_iodim forward_loop{2, 1, lanes};  // d = 0, 1
     const fftw_iodim inverse_dim{n_x, 1, 2};
-    const fftw_iodim inverse_loops[2] = {{n_y, 2 * lanes, 2 * n_x}, {2, lanes, 1}};
-    // All s rows (work: the solves; kept: the split solve), or the bottom row only (j = 0: loads and
-    // displacements 2 i + d), the last loop of each.
+    const fftw_iodim inverse_loop{2, lanes, 1};
+    // work: the solves; kept: the split solve; contact: the bottom row only (j = 0: loads and
+    // displacements 2 i + d).
     for (int k : {work, kept, contact}) {
-      const int rank = k == contact ? 1 : 2;
-      const fftw_iodim* f_loops = k == contact ? forward_loops + 1 : forward_loops;
-      const fftw_iodim* i_loops = k == contact ? inverse_loops + 1 : inverse_loops;
-      plans_->forward[k] = fftw_plan_guru_split_dft_r2c(1, &forward_dim, rank, f_loops, data.data(), plans_->re[k],
+      plans_->forward[k] = fftw_plan_guru_split_dft_r2c(1, &forward_dim, 1, &forward_loop, data.data(), plans_->re[k],
                                                         plans_->im[k], flags);
-      plans_->inverse[k] = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, rank, i_loops, plans_->re[k],
+      plans_->inverse[k] = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 1, &inverse_loop, plans_->re[k],
                                                         plans_->im[k], data.data(), flags);
       if (!plans_->forward[k] || !plans_->inverse[k]) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
     }
@@ -265,16 +270,18 @@ namespace {
 /// Forward sweep L y = f (unit L) for all lanes m, then x = D^{-1} y - L^H x backward, in place on the
 /// spectrum. Rows are offset by p in y (zero rows on either side). P is the half-bandwidth when it is a
 /// compile-time constant (the loops over k unroll and the loop over m vectorizes), 0 for the general case.
+/// Only the lanes m0 <= m < m1 are touched: each m is its own system, computed the same for any range.
 template <int P>
-void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_re, const double* __restrict L_im,
-                   const double* __restrict inv_D, double* __restrict y_re, double* __restrict y_im) {
+void banded_sweeps(int s, int p_runtime, int lanes, int m0, int m1, const double* __restrict L_re,
+                   const double* __restrict L_im, const double* __restrict inv_D, double* __restrict y_re,
+                   double* __restrict y_im) {
   const int p = P > 0 ? P : p_runtime;
   for (int r = 0; r < s; ++r) {
     double* __restrict out_re = y_re + static_cast<std::size_t>(r + p) * lanes;
     double* __restrict out_im = y_im + static_cast<std::size_t>(r + p) * lanes;
     const double* l_re = L_re + static_cast<std::size_t>(r) * p * lanes;
     const double* l_im = L_im + static_cast<std::size_t>(r) * p * lanes;
-    for (int m = 0; m < lanes; ++m) {
+    for (int m = m0; m < m1; ++m) {
       double a_re = out_re[m], a_im = out_im[m];
       for (int k = 1; k <= p; ++k) {
         const double lr = l_re[(k - 1) * lanes + m], li = l_im[(k - 1) * lanes + m];
@@ -290,7 +297,7 @@ void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_r
     double* __restrict out_re = y_re + static_cast<std::size_t>(r + p) * lanes;
     double* __restrict out_im = y_im + static_cast<std::size_t>(r + p) * lanes;
     const double* d = inv_D + static_cast<std::size_t>(r) * lanes;
-    for (int m = 0; m < lanes; ++m) {
+    for (int m = m0; m < m1; ++m) {
       double a_re = out_re[m] * d[m], a_im = out_im[m] * d[m];
       for (int k = 1; k <= p; ++k) {  // x_r -= conj(L(r+k, r)) x_{r+k}
         const std::size_t at = (static_cast<std::size_t>(r + k) * p + k - 1) * lanes + m;
@@ -307,29 +314,44 @@ void banded_sweeps(int s, int p_runtime, int lanes, const double* __restrict L_r
 
 }  // namespace
 
-void BlockCirculantSolver::transform(Spectrum spectrum, const double* b) const {
+// FFTW's new-array execute functions are thread-safe; each j writes its own rows of the spectrum and of x.
+void BlockCirculantSolver::transform(Spectrum spectrum, const double* b, int j0, int j1) const {
   const int k = static_cast<int>(spectrum);
-  // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
-  fftw_execute_split_dft_r2c(plans_->forward[k], const_cast<double*>(b), plans_->re[k], plans_->im[k]);
+  for (int j = j0; j < j1; ++j) {
+    const std::size_t row = 2 * static_cast<std::size_t>(j) * lanes_;
+    // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
+    fftw_execute_split_dft_r2c(plans_->forward[k], const_cast<double*>(b) + 2 * static_cast<std::size_t>(j) * n_x_,
+                               plans_->re[k] + row, plans_->im[k] + row);
+  }
 }
 
-void BlockCirculantSolver::inverse_transform(Spectrum spectrum, double* x) const {
+void BlockCirculantSolver::inverse_transform(Spectrum spectrum, double* x, int j0, int j1) const {
   const int k = static_cast<int>(spectrum);
-  fftw_execute_split_dft_c2r(plans_->inverse[k], plans_->re[k], plans_->im[k], x);
+  for (int j = j0; j < j1; ++j) {
+    const std::size_t row = 2 * static_cast<std::size_t>(j) * lanes_;
+    fftw_execute_split_dft_c2r(plans_->inverse[k], plans_->re[k] + row, plans_->im[k] + row,
+                               x + 2 * static_cast<std::size_t>(j) * n_x_);
+  }
 }
 
-void BlockCirculantSolver::sweep(double* y_re, double* y_im) const {
+void BlockCirculantSolver::sweep(double* y_re, double* y_im, int m0, int m1) const {
   if (p_ == 3)
-    banded_sweeps<3>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+    banded_sweeps<3>(s_, p_, lanes_, m0, m1, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
   else
-    banded_sweeps<0>(s_, p_, lanes_, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
+    banded_sweeps<0>(s_, p_, lanes_, m0, m1, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);
 }
 
 void BlockCirculantSolver::solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const {
   assert(b.size() == size() && x.size() == size());
-  transform(Spectrum::work, b.data());
-  sweep(work_re_.data(), work_im_.data());
-  inverse_transform(Spectrum::work, x.data());
+  // Rows j to threads for the FFTs, wavenumbers m for the sweeps (which couple all rows of one m).
+  run_team(threads_, [&](int t, int T) {
+    const Share rows = share(n_y_, t, T), modes = share(lanes_, t, T, kLaneGranule);
+    transform(Spectrum::work, b.data(), rows.begin, rows.end);
+    team_barrier();
+    sweep(work_re_.data(), work_im_.data(), modes.begin, modes.end);
+    team_barrier();
+    inverse_transform(Spectrum::work, x.data(), rows.begin, rows.end);
+  });
 }
 
 Eigen::VectorXd BlockCirculantSolver::solve(const Eigen::VectorXd& b) const {

@@ -26,8 +26,16 @@
 // the 2 x n_x loads. solve_free() keeps the spectrum X_m of the free solve and inverse-transforms only rows
 // 0 and 1; solve_loaded() adds G_m R_m and inverse-transforms all rows once: about one solve for both.
 //
-// Thread safety: solve() writes a mutable workspace, so one object must not be used by two threads at
-// once; build one solver per thread. Construction (FFTW planning) is serialized internally.
+// Threads: a solve runs on a team of `threads` OpenMP threads (numerics.threads; linalg/thread_team.hpp).
+// The FFTs go one mesh row j at a time (the rows 2 j, 2 j + 1) through one plan executed on each row's
+// own arrays (FFTW's new-array execute functions are thread-safe), rows shared out to the threads; the
+// sweeps share out the wavenumbers m (each m is its own system). Which thread does a row or an m never
+// changes how it is computed, so x is the same to the bit for any thread count. A solve has three
+// synchronization points (start, two barriers), so the team needs a free core per thread: on a busy
+// machine a barrier waits for a descheduled thread (libgomp spin-waits by default, 5-7x slower per step
+// on the shared 2-core machine of README "Threads for one run"; OMP_WAIT_POLICY=PASSIVE limits the loss).
+// Thread safety: solve() writes a mutable workspace, so one object must not be used by two callers at
+// once; build one solver per caller. Construction (FFTW planning) is serialized internally.
 //
 // Reproducibility: the FFT plans are made with FFTW_ESTIMATE | FFTW_NO_SIMD, so they depend on the sizes
 // alone (not on timing or on the CPU's vector extensions), and a solve is bitwise repeatable.
@@ -48,7 +56,8 @@ class BlockCirculantSolver : public SplitSolver {
   /// 2 n_x n_y, symmetric and block-circulant with nearest-neighbour coupling; n_x >= 3, n_y >= 1) and
   /// factorizes A(theta_m), m = 0..n_x/2 (std::runtime_error if one is not positive definite).
   /// @param A full symmetric storage (both triangles), DOF 2 (j n_x + i) + d
-  BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y);
+  /// @param threads size of the OpenMP team of each solve (>= 1, else std::invalid_argument)
+  BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, int threads = 1);
   ~BlockCirculantSolver();
   BlockCirculantSolver(BlockCirculantSolver&&) noexcept;
   BlockCirculantSolver& operator=(BlockCirculantSolver&&) noexcept;
@@ -71,6 +80,7 @@ class BlockCirculantSolver : public SplitSolver {
   int n_y() const { return n_y_; }
   /// Half-bandwidth p of the blocks in the slice ordering r = 2 j + d.
   int bandwidth() const { return p_; }
+  int threads() const { return threads_; }
   /// Bytes held by the factors, the workspace and the FFT plans' arrays (not the plans themselves).
   std::size_t memory_bytes() const;
 
@@ -85,9 +95,12 @@ class BlockCirculantSolver : public SplitSolver {
   // The spectrum buffers, each with FFT plans of its own: work_ (solves), kept_ (the free solve's spectrum,
   // split solve), contact_ (rows 0 and 1 only: the bottom row's 2 n_x values).
   enum class Spectrum { work = 0, kept = 1, contact = 2 };
-  void transform(Spectrum spectrum, const double* b) const;  ///< b (real) -> the buffer's data rows
-  void inverse_transform(Spectrum spectrum, double* x) const;  ///< the buffer's data rows -> x; destroys them
-  void sweep(double* y_re, double* y_im) const;  ///< y <- A^{-1} y / n_x on a padded (s + 2p)-row spectrum
+  /// Mesh rows j0 <= j < j1 of b (real) -> the buffer's data rows 2 j, 2 j + 1.
+  void transform(Spectrum spectrum, const double* b, int j0, int j1) const;
+  /// The buffer's data rows 2 j, 2 j + 1 -> mesh rows j0 <= j < j1 of x; destroys them.
+  void inverse_transform(Spectrum spectrum, double* x, int j0, int j1) const;
+  /// y <- A^{-1} y / n_x on a padded (s + 2p)-row spectrum, lanes m0 <= m < m1.
+  void sweep(double* y_re, double* y_im, int m0, int m1) const;
   void prepare_split();                          ///< G and the split workspace (block_circulant_split.cpp)
 
   int n_x_, n_y_;
@@ -95,6 +108,9 @@ class BlockCirculantSolver : public SplitSolver {
   int p_;        ///< half-bandwidth of the blocks
   int n_modes_;  ///< n_x / 2 + 1 wavenumbers
   int lanes_;    ///< n_modes_ padded to an even count (vector lanes across m)
+  int threads_;  ///< OpenMP team size of a solve
+  /// Lanes are shared out to threads in multiples of a 64-byte cache line of doubles.
+  static constexpr int kLaneGranule = 8;
 
   // Factors, structure of arrays with m fastest: L(r, r-k) at ((r p + k - 1) lanes + m), real and
   // imaginary parts apart; rows s..s+p-1 are zero so that the backward sweep needs no bounds test.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "linalg/block_circulant_solver.hpp"
+#include "linalg/thread_team.hpp"
 
 namespace slidewave {
 
@@ -20,7 +21,7 @@ void BlockCirculantSolver::prepare_split() {
     std::fill(kept_re_.begin(), kept_re_.end(), 0.0);
     std::fill(kept_im_.begin(), kept_im_.end(), 0.0);
     std::fill_n(kept_re_.begin() + static_cast<std::size_t>(p_ + b) * lanes_, lanes_, 1.0);
-    sweep(kept_re_.data(), kept_im_.data());
+    sweep(kept_re_.data(), kept_im_.data(), 0, lanes_);
     std::copy_n(kept_re_.begin() + static_cast<std::size_t>(p_) * lanes_, rows, G_re_.begin() + b * rows);
     std::copy_n(kept_im_.begin() + static_cast<std::size_t>(p_) * lanes_, rows, G_im_.begin() + b * rows);
   }
@@ -33,12 +34,17 @@ void BlockCirculantSolver::solve_free(const Eigen::Ref<const Eigen::VectorXd>& b
   assert(b.size() == size() && u_contact.size() == n_contact());
   double* X_re = kept_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* X_im = kept_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  transform(Spectrum::kept, b.data());
-  sweep(kept_re_.data(), kept_im_.data());
+  // Rows j to threads for the FFTs, wavenumbers m for the sweeps (as in solve_into).
+  run_team(threads_, [&](int t, int T) {
+    const Share rows = share(n_y_, t, T), modes = share(lanes_, t, T, kLaneGranule);
+    transform(Spectrum::kept, b.data(), rows.begin, rows.end);
+    team_barrier();
+    sweep(kept_re_.data(), kept_im_.data(), modes.begin, modes.end);
+  });
   // Rows 0 and 1 only, through a copy: the inverse transform destroys its input and X is kept.
   std::copy_n(X_re, contact_re_.size(), contact_re_.begin());
   std::copy_n(X_im, contact_im_.size(), contact_im_.begin());
-  inverse_transform(Spectrum::contact, u_contact.data());
+  inverse_transform(Spectrum::contact, u_contact.data(), 0, 1);
   kept_valid_ = true;
 }
 
@@ -47,7 +53,7 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
   if (!kept_valid_) throw std::logic_error("BlockCirculantSolver::solve_loaded: no solve_free() before it");
   double* X_re = kept_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* X_im = kept_im_.data() + static_cast<std::size_t>(p_) * lanes_;
-  transform(Spectrum::contact, g.data());
+  transform(Spectrum::contact, g.data(), 0, 1);
   const double* R0_re = contact_re_.data();
   const double* R0_im = contact_im_.data();
   const double* R1_re = R0_re + lanes_;
@@ -58,15 +64,19 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
   const double* G1_re = G0_re + rows;
   const double* G1_im = G0_im + rows;
   const int n_modes = n_modes_;  // the padding lane is never read by the inverse transform
-  for (int r = 0; r < s_; ++r) {
-    const std::size_t row = static_cast<std::size_t>(r) * lanes_;
-    for (int m = 0; m < n_modes; ++m) {
-      const std::size_t k = row + m;
-      X_re[k] += G0_re[k] * R0_re[m] - G0_im[k] * R0_im[m] + G1_re[k] * R1_re[m] - G1_im[k] * R1_im[m];
-      X_im[k] += G0_re[k] * R0_im[m] + G0_im[k] * R0_re[m] + G1_re[k] * R1_im[m] + G1_im[k] * R1_re[m];
+  // Each mesh row j (spectrum rows 2 j, 2 j + 1) needs only its own rows: rows to threads, no barrier.
+  run_team(threads_, [&](int t, int T) {
+    const Share mesh_rows = share(n_y_, t, T);
+    for (int r = 2 * mesh_rows.begin; r < 2 * mesh_rows.end; ++r) {
+      const std::size_t row = static_cast<std::size_t>(r) * lanes_;
+      for (int m = 0; m < n_modes; ++m) {
+        const std::size_t k = row + m;
+        X_re[k] += G0_re[k] * R0_re[m] - G0_im[k] * R0_im[m] + G1_re[k] * R1_re[m] - G1_im[k] * R1_im[m];
+        X_im[k] += G0_re[k] * R0_im[m] + G0_im[k] * R0_re[m] + G1_re[k] * R1_im[m] + G1_im[k] * R1_re[m];
+      }
     }
-  }
-  inverse_transform(Spectrum::kept, u.data());  // destroys X: one solve_loaded per solve_free
+    inverse_transform(Spectrum::kept, u.data(), mesh_rows.begin, mesh_rows.end);  // destroys X: one solve_loaded per solve_free
+  });
   kept_valid_ = false;
 }
 

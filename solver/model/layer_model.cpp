@@ -29,7 +29,7 @@ LayerModel::LayerModel(const RunConfig& c)
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {
   if (config.numerics.linear_solver != LinearSolverKind::cholmod)  // circulant, spectral
-    return std::make_unique<BlockCirculantSolver>(A, mesh.n_x, mesh.n_y);
+    return std::make_unique<BlockCirculantSolver>(A, mesh.n_x, mesh.n_y, config.numerics.threads);
   return std::make_unique<SparseCholesky>(A);
 }
 

@@ -1,9 +1,11 @@
 // FFT block-circulant solver (linalg/block_circulant_solver) against CHOLMOD (linalg/sparse_cholesky)
 // and a dense LLT on the layer's own matrices: K_eff, K_ff, M_ff for every integration and mass, odd
-// and even n_x (the Nyquist mode), n_y from 1; and its refusals (not circulant, not symmetric, not SPD).
+// and even n_x (the Nyquist mode), n_y from 1; the same bits for any thread count; and its refusals
+// (not circulant, not symmetric, not SPD).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstring>
 #include <random>
 
 #include "linalg/block_circulant_solver.hpp"
@@ -85,6 +87,43 @@ TEST(BlockCirculantSolver, SolveVariantsAgreeBitwise) {
   EXPECT_EQ(Eigen::VectorXd(X.col(0)), x);
   EXPECT_EQ(Eigen::VectorXd(X.col(2)), fft.solve(Eigen::VectorXd(B.col(2))));
   EXPECT_THROW(fft.solve(Eigen::VectorXd(Eigen::VectorXd::Zero(fft.size() + 1))), std::invalid_argument);
+}
+
+bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+// numerics.threads: the FFT rows and the wavenumbers are shared out to the threads, and every row and
+// wavenumber is computed the same way for any count, so x is the same to the bit. n_x = 40 gives 22
+// lanes, split at a multiple of 8 (both threads sweep), and n_y = 5 an uneven split of the rows; the odd
+// n_x = 41 has no Nyquist mode.
+TEST(BlockCirculantSolver, ThreadCountDoesNotChangeABit) {
+  for (int n_x : {40, 41}) {
+    const int n_y = 5;
+    const Layer l = layer(n_x, n_y, Integration::reduced, "consistent");
+    ASSERT_EQ(l.model.mesh.n_x, n_x);
+    const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+    BlockCirculantSolver one(A, n_x, n_y, 1);
+    const Eigen::VectorXd b = random_vector(one.size(), 11);
+    const Eigen::VectorXd g = random_vector(one.n_contact(), 12);
+    const Eigen::VectorXd x_one = one.solve(b);
+    Eigen::VectorXd u_contact_one(one.n_contact()), u_one(one.size());
+    one.solve_free(b, u_contact_one);
+    one.solve_loaded(g, u_one);
+    for (int threads : {2, 3}) {
+      BlockCirculantSolver team(A, n_x, n_y, threads);
+      EXPECT_EQ(team.threads(), threads);
+      const std::string where = "n_x = " + std::to_string(n_x) + ", " + std::to_string(threads) + " threads";
+      EXPECT_TRUE(same_bits(team.solve(b), x_one)) << where << ": solve";
+      Eigen::VectorXd u_contact(team.n_contact()), u(team.size());
+      team.solve_free(b, u_contact);
+      EXPECT_TRUE(same_bits(u_contact, u_contact_one)) << where << ": solve_free";
+      team.solve_loaded(g, u);
+      EXPECT_TRUE(same_bits(u, u_one)) << where << ": solve_loaded";
+    }
+  }
+  const Layer l = layer(5, 3, Integration::reduced, "consistent");
+  EXPECT_THROW(BlockCirculantSolver(l.model.K_ff, 5, 3, 0), std::invalid_argument);
 }
 
 TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
