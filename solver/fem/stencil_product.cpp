@@ -79,16 +79,17 @@ StencilProduct::StencilProduct(const RowMatrix& K, int n_x) : n_x_(n_x) {
           const size_t n_slots = row_x.size();
           for (size_t k = 0; k < std::max(entries.size(), n_slots); ++k) {
             if (k >= entries.size() || k >= n_slots)
-              refuse(n_x, row_name(row, n_x) + " stores " + std::to_string(entries.size()) + " entries, the row of node (1, " +
-                              std::to_string(j) + ") " + std::to_string(n_slots));
+              refuse(n_x, row_name(row, n_x) + " stores " + std::to_string(entries.size()) +
+                              " entries, the row of node (1, " + std::to_string(j) + ") " + std::to_string(n_slots));
             const int s = slot_begin_.back() + static_cast<int>(k);
             const int column = row_of_node_0 + 2 * i + slot_offsets_[s];
             const double value = d == 0 ? slot_c_x_[s] : slot_c_y_[s];
             if (entries[k].column != column || !same_bits(entries[k].value, value))
-              refuse(n_x, "entry " + std::to_string(k) + " of " + row_name(row, n_x) + " is K(" + std::to_string(row) +
-                              ", " + std::to_string(entries[k].column) + ") = " + number(entries[k].value) +
-                              "; the row of node (1, " + std::to_string(j) + ") shifted by " + std::to_string(2 * (i - 1)) +
-                              " gives K(" + std::to_string(row) + ", " + std::to_string(column) + ") = " + number(value));
+              refuse(n_x, "entry " + std::to_string(k) + " of " + row_name(row, n_x) + " is K(" +
+                              std::to_string(row) + ", " + std::to_string(entries[k].column) + ") = " +
+                              number(entries[k].value) + "; the row of node (1, " + std::to_string(j) +
+                              ") shifted by " + std::to_string(2 * (i - 1)) + " gives K(" + std::to_string(row) +
+                              ", " + std::to_string(column) + ") = " + number(value));
           }
         }
     }
@@ -131,8 +132,8 @@ namespace {
 /// the additions of different nodes overlap and no partial sum goes back to memory between slots.
 constexpr int kBlock = 8;
 
-/// Sums of the interior nodes [m0, m0 + n_nodes) of one mesh row (n_nodes <= kBlock; the compiler unrolls and
-/// vectorizes the full block, n_nodes = kBlock).
+/// Sums of n_nodes consecutive interior nodes of one mesh row, u and out at the first one's rows
+/// (n_nodes <= n_nodes_max <= kBlock; the compiler unrolls and vectorizes the full block, n_nodes_max = kBlock).
 template <int n_nodes_max>
 inline void sum_block(const double* __restrict u, double* __restrict out, const int* offsets, const double* c_x,
                       const double* c_y, int n_slots, int n_nodes) {

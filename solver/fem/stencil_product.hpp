@@ -12,13 +12,13 @@
 // tmp += K(k, c) u(c) over the stored entries in increasing column c (each product rounded, then added),
 // and Ku(k) = 0 + 1 * tmp (= tmp: tmp starts at +0, so it is never -0). apply() gives each output the same
 // terms in the same order (the stored order of K, explicit zeros included), so the rounding is the same:
-//   - interior nodes: the template row's entries in its stored order; the loop runs over i with the
-//     coefficients fixed, so it vectorizes across x (lanes are different outputs, each keeps its order);
+//   - interior nodes: the template row's entries in its stored order, one entry at a time over a block of
+//     8 nodes whose sums stay in registers; the coefficients are fixed across the block, so it vectorizes
+//     across x (the lanes are different outputs: the two rows of a node; each keeps its order);
 //   - the seam nodes i = 0 and i = n_x - 1, whose periodic neighbour has the larger (smaller) index and
 //     so comes last (first) in column order: their rows of K, copied as they are stored.
-// Neither loop may be contracted to fused multiply-adds differently from Eigen's (the build has no
-// -mfma/-march; if both are contracted the operation order still matches). tests/solver/stencil_product_test
-// checks the equality with memcmp.
+// Neither this product nor Eigen's may be contracted to fused multiply-adds (the build has no -mfma or
+// -march, so neither is); tests/solver/stencil_product_test.cpp checks the equality with memcmp.
 //
 // When not to use: K with entries that differ along x (graded mesh, x-dependent material), or a numbering
 // other than the one above; the constructor then refuses K (std::invalid_argument), and the sparse product is
