@@ -23,6 +23,11 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
                                   std::string("loaded DOFs are the ") + std::to_string(system.n_contact) +
                                   " contact DOFs");
   }
+  try {
+    if (system.n_contact % 2 == 0) K_stencil_ = std::make_unique<StencilProduct>(system.K, system.n_contact / 2);
+  } catch (const std::invalid_argument&) {
+    // Not the layer's periodic stencil (e.g. a small test system): the sparse product, same result.
+  }
   const int n_f = system.n_free, n = system.n_free + system.n_prescribed;
   u_free_contact_.resize(system.n_contact);
   contact_load_.resize(system.n_contact);
@@ -43,7 +48,7 @@ HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::Vector
   s.u = u;
   s.v = v;
   s.r = r;
-  s.Ku = system_.K * u;
+  multiply_K(u, s.Ku);
   Eigen::VectorXd rhs = -s.Ku.head(n_f);
   rhs.head(n_c) += r;
   s.acc = Eigen::VectorXd::Zero(u.size());
@@ -53,6 +58,13 @@ HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::Vector
   s.Ma_f = -s.Ku.head(n_f);
   s.Ma_f.head(n_c) += r;
   return s;
+}
+
+void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const {
+  if (K_stencil_)
+    K_stencil_->apply(u, Ku);
+  else
+    Ku.noalias() = system_.K * u;
 }
 
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
@@ -92,7 +104,7 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
   s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next_);
   s.acc.head(n_f) = acc_f_next_;
 
-  Ku_next_.noalias() = system_.K * u_work_;
+  multiply_K(u_work_, Ku_next_);
   Ma_next_ = -(1 - a) * Ku_next_.head(n_f) - a * s.Ku.head(n_f);
   Ma_next_.head(n_c) += w_ * r_next + w_previous_ * s.r;
   s.Mv_f += dt * ((1 - hht_.gamma) * s.Ma_f + hht_.gamma * Ma_next_);

@@ -20,11 +20,14 @@
 //
 // The mass products M_ff u, M_ff v, M_ff a of the free rows are carried through the step by the Newmark
 // relations and the equation of motion (M_ff a(n+1) follows from K u(n+1), K u(n) and the contact forces),
-// so that K u is the only full sparse product of a step.
+// so that K u is the only full product of a step. When K is a stencil periodic in x with rows of n_contact / 2
+// nodes (the layer: its contact DOFs are the bottom mesh row), K u is matrix-free (fem/stencil_product.hpp),
+// bitwise equal to the sparse product; any other K (StencilProduct refuses it) keeps the sparse product.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <memory>
 
+#include "fem/stencil_product.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/split_solver.hpp"
 #include "time/hht.hpp"
@@ -83,6 +86,8 @@ class HHTStepper {
   const HHTCoefficients& coefficients() const { return hht_; }
   /// w, the weight of r(n+1) in the equation of motion (the correction is u_free + w Z r(n+1)).
   double contact_weight() const { return w_; }
+  /// K u by the matrix-free stencil product (else by the sparse product); same bits either way.
+  bool uses_stencil_product() const { return K_stencil_ != nullptr; }
 
  private:
   PartitionedSystem system_;
@@ -90,6 +95,9 @@ class HHTStepper {
   double w_, w_previous_;
   std::unique_ptr<LinearSolver> K_eff_;
   SplitSolver* split_ = nullptr;  ///< K_eff_ on the one-pass path, else null
+  std::unique_ptr<StencilProduct> K_stencil_;  ///< null when K is not a periodic stencil
+  /// Ku = K u (u and Ku distinct).
+  void multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const;
   Eigen::VectorXd u_free_contact_, contact_load_;
   Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, acc_f_next_, r_previous_;
 };
