@@ -1,5 +1,14 @@
 #include "contact/delassus.hpp"
 
+#include <algorithm>
+
+// Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX-512F has FMA), which
+// rounds once where Eigen's kernels round twice. The clones then differ from the baseline code only in
+// vector width, which leaves every entry's operations and their order unchanged.
+#define SLIDEWAVE_MULTIVERSIONED \
+  __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
+
+
 namespace slidewave {
 
 Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs) {
@@ -35,6 +44,62 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W) {
   C.topRows(n_c) = W.leftCols<2>();
   C.bottomRows(n_c) = W.leftCols<2>();
   return C;
+}
+
+namespace {
+
+/// out_i = out_i + (c0_i d0 + c1_i d1), i < n.
+SLIDEWAVE_MULTIVERSIONED
+void add_two_columns(const double* __restrict c0, const double* __restrict c1, double d0, double d1,
+                     double* __restrict out, Eigen::Index n) {
+  for (Eigen::Index i = 0; i < n; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
+}
+
+/// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0 in column order, i < n
+/// (one column block of Eigen's general_matrix_vector_product, ColMajor).
+SLIDEWAVE_MULTIVERSIONED
+void add_column_block(const double* const* __restrict column, const double* __restrict coefficient, int n_columns,
+                      double* __restrict out, Eigen::Index n) {
+  constexpr Eigen::Index kChunk = 64;  // the partial sums of a chunk stay in L1 (or registers)
+  for (Eigen::Index i0 = 0; i0 < n; i0 += kChunk) {
+    const Eigen::Index m = std::min(kChunk, n - i0);
+    double sum[kChunk] = {};
+    for (int j = 0; j < n_columns; ++j) {
+      const double* __restrict c = column[j] + i0;
+      const double a = coefficient[j];
+      for (Eigen::Index t = 0; t < m; ++t) sum[t] += c[t] * a;
+    }
+    for (Eigen::Index t = 0; t < m; ++t) out[i0 + t] += sum[t];
+  }
+}
+
+/// Start of W(:, 2k) (and of W(:, 2k + 1) in the second column) within the stacked generating columns.
+Eigen::Index column_start(int n_nodes, int k) { return 2 * ((n_nodes - k) % n_nodes); }
+
+}  // namespace
+
+void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
+                               Eigen::VectorXd& y) {
+  const Eigen::Index start = column_start(n_nodes, k);
+  add_two_columns(columns.data() + start, columns.data() + columns.rows() + start, d0, d1, y.data(), 2 * n_nodes);
+}
+
+void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                       Eigen::VectorXd& y) {
+  const Eigen::Index n_c = 2 * n_nodes;
+  y = q;
+  // Eigen 3.4's column blocking of the matrix-vector product (GeneralMatrixVector.h): the whole matrix
+  // below 128 columns, else 16 columns while a column is under 32000 bytes, else 4.
+  const int block = n_c < 128 ? static_cast<int>(n_c) : (n_c * static_cast<Eigen::Index>(sizeof(double)) < 32000 ? 16 : 4);
+  const double* column[128];
+  for (Eigen::Index j0 = 0; j0 < n_c; j0 += block) {
+    const int n_block = static_cast<int>(std::min<Eigen::Index>(block, n_c - j0));
+    for (int j = 0; j < n_block; ++j) {
+      const Eigen::Index col = j0 + j;
+      column[j] = columns.data() + (col % 2) * columns.rows() + column_start(n_nodes, static_cast<int>(col / 2));
+    }
+    add_column_block(column, r.data() + j0, n_block, y.data(), n_c);
+  }
 }
 
 }  // namespace slidewave

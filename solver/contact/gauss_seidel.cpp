@@ -3,20 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/delassus.hpp"
+
 namespace slidewave {
 
 namespace {
 
-/// y += W(:, 2k..2k+1) delta with W's columns read from delassus_periodic_columns(W): the same products
-/// and sums, in the same order per entry, as Eigen's y += W.middleCols<2>(2k) * delta.
-void add_periodic_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, const Eigen::Vector2d& delta,
-                          Eigen::VectorXd& y) {
-  const Eigen::Index n_c = 2 * n_nodes, start = 2 * ((n_nodes - k) % n_nodes);
-  const double* __restrict c0 = columns.data() + start;
-  const double* __restrict c1 = columns.data() + columns.rows() + start;
-  double* __restrict out = y.data();
-  const double d0 = delta.x(), d1 = delta.y();
-  for (Eigen::Index i = 0; i < n_c; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
+/// y = q + W r, from W's generating columns when it is block-circulant (the same numbers bit for bit).
+void compute_local_variables(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                             const Eigen::MatrixXd* periodic_columns, Eigen::VectorXd& y) {
+  if (periodic_columns)
+    periodic_residual(*periodic_columns, static_cast<int>(q.size() / 2), q, r, y);
+  else
+    y = q + W * r;
 }
 
 /// One pass of at most settings.max_iterations sweeps from the r passed in, each node's reaction moved
@@ -27,7 +26,7 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
                                         std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
   const int n_nodes = static_cast<int>(q.size() / 2);
   state.assign(n_nodes, ContactState::open);
-  y = q + W * r;
+  compute_local_variables(W, q, r, periodic_columns, y);
   std::vector<Eigen::Matrix2d> diagonal_blocks(n_nodes);
   for (int k = 0; k < n_nodes; ++k) diagonal_blocks[k] = W.block<2, 2>(2 * k, 2 * k);
 
@@ -59,7 +58,7 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
         const Eigen::Vector2d delta = relaxation == 1 ? change : Eigen::Vector2d(relaxation * change);
         r.segment<2>(2 * k) = relaxation == 1 ? local.r : Eigen::Vector2d(r_old + delta);
         if (periodic_columns)
-          add_periodic_columns(*periodic_columns, n_nodes, k, delta, y);
+          add_periodic_node_columns(*periodic_columns, n_nodes, k, delta.x(), delta.y(), y);
         else
           y.noalias() += W.middleCols<2>(2 * k) * delta;
         max_change = std::max(max_change, change.cwiseAbs().maxCoeff());
@@ -83,7 +82,7 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
     }
   }
   // Recompute y from scratch so that rounding drift of the in-place updates never reaches the output.
-  y = q + W * r;
+  compute_local_variables(W, q, r, periodic_columns, y);
   return report;
 }
 

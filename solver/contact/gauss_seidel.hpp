@@ -72,8 +72,9 @@ struct GaussSeidelSettings {
 /// @param y      out: local variables q + W r
 /// @param state  out: per-node contact state
 /// @param periodic_columns  null, or delassus_periodic_columns(W) when W is block-circulant: the in-place
-///               updates of y then read W's columns from it (the same numbers and operations, so the same
-///               result bit for bit, without streaming all of W through the cache on every sweep)
+///               updates of y and the products y = q + W r then read W's columns from it
+///               (add_periodic_node_columns, periodic_residual: the same numbers and operations, so the
+///               same result bit for bit, without streaming all of W through the cache)
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
