@@ -1,6 +1,7 @@
 #include "contact/delassus.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 // Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX-512F has FMA), which
 // rounds once where Eigen's kernels round twice. The clones then differ from the baseline code only in
@@ -55,21 +56,41 @@ void add_two_columns(const double* __restrict c0, const double* __restrict c1, d
   for (Eigen::Index i = 0; i < n; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
 }
 
+/// Eight doubles as one value (GCC vector extension: one AVX-512 register, two AVX2, four SSE2), loaded
+/// unaligned by memcpy; its + and * are per lane, the same IEEE operations as on scalars.
+typedef double Lanes8 __attribute__((vector_size(64)));
+
 /// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0 in column order, i < n
-/// (one column block of Eigen's general_matrix_vector_product, ColMajor).
+/// (one column block of Eigen's general_matrix_vector_product, ColMajor). Written over explicit vectors
+/// of 32 rows, whose partial sums stay in registers: left to itself, GCC vectorizes across the columns
+/// (gathers) instead.
 SLIDEWAVE_MULTIVERSIONED
 void add_column_block(const double* const* __restrict column, const double* __restrict coefficient, int n_columns,
                       double* __restrict out, Eigen::Index n) {
-  constexpr Eigen::Index kChunk = 64;  // the partial sums of a chunk stay in L1 (or registers)
-  for (Eigen::Index i0 = 0; i0 < n; i0 += kChunk) {
-    const Eigen::Index m = std::min(kChunk, n - i0);
-    double sum[kChunk] = {};
+  Eigen::Index i0 = 0;
+  for (; i0 + 32 <= n; i0 += 32) {
+    Lanes8 s0 = {}, s1 = {}, s2 = {}, s3 = {};
     for (int j = 0; j < n_columns; ++j) {
-      const double* __restrict c = column[j] + i0;
+      const double* c = column[j] + i0;
       const double a = coefficient[j];
-      for (Eigen::Index t = 0; t < m; ++t) sum[t] += c[t] * a;
+      Lanes8 c0, c1, c2, c3;
+      std::memcpy(&c0, c, sizeof c0);
+      std::memcpy(&c1, c + 8, sizeof c1);
+      std::memcpy(&c2, c + 16, sizeof c2);
+      std::memcpy(&c3, c + 24, sizeof c3);
+      s0 += c0 * a;
+      s1 += c1 * a;
+      s2 += c2 * a;
+      s3 += c3 * a;
     }
-    for (Eigen::Index t = 0; t < m; ++t) out[i0 + t] += sum[t];
+    const Lanes8 sums[4] = {s0, s1, s2, s3};
+    for (int v = 0; v < 4; ++v)
+      for (int t = 0; t < 8; ++t) out[i0 + 8 * v + t] += sums[v][t];
+  }
+  for (Eigen::Index i = i0; i < n; ++i) {
+    double sum = 0;
+    for (int j = 0; j < n_columns; ++j) sum += column[j][i] * coefficient[j];
+    out[i] += sum;
   }
 }
 
