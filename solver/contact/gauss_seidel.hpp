@@ -62,6 +62,14 @@ struct GaussSeidelSettings {
   double force_scale = 1.0;  ///< nominal nodal force (p0 h): residuals are relative to it
 };
 
+/// What one solve keeps for the next with the same block-circulant W: the block sums of W r for the r
+/// it returned (periodic_residual, contact/delassus.hpp). The next solve, warm-started from that r bit for
+/// bit (the time loop's case), gets its starting y = q + W r from them without the O(n_c^2) product.
+struct GaussSeidelWorkspace {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd block_sums;
+};
+
 /// @param W      Delassus operator (2n x 2n, symmetric positive definite)
 /// @param q      free local variables (r = 0)
 /// @param f      friction coefficient
@@ -75,10 +83,12 @@ struct GaussSeidelSettings {
 ///               updates of y and the products y = q + W r then read W's columns from it
 ///               (add_periodic_node_columns, periodic_residual: the same numbers and operations, so the
 ///               same result bit for bit, without streaming all of W through the cache)
+/// @param workspace  null, or (with periodic_columns) the same object on every solve with this W
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
                                              std::vector<ContactState>& state,
-                                             const Eigen::MatrixXd* periodic_columns = nullptr);
+                                             const Eigen::MatrixXd* periodic_columns = nullptr,
+                                             GaussSeidelWorkspace* workspace = nullptr);
 
 }  // namespace slidewave
