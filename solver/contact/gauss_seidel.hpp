@@ -4,7 +4,7 @@
 // with the local Signorini–Coulomb law of coulomb_local.hpp at every node. Each sweep solves every
 // node exactly with the others frozen; y is updated in place (two columns of W per node), so a sweep
 // costs O(n^2) (O(n) memory traffic when W is block-circulant and its two generating columns are
-// passed: they fit in the cache where W does not). Warm-started from the r passed in.
+// passed: they fit in the cache where W does not; docs/contact-solver.md). Warm-started from the r passed in.
 // Convergence: max_k |r_k(new) - r_k(old)| <= tolerance * force_scale over one sweep.
 //
 // Prakash–Clifton bounds (a given bound g_k per closed node) make the local law discontinuous at
