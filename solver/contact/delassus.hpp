@@ -26,4 +26,33 @@ Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_cont
 /// read for their in-place updates, contact/gauss_seidel.hpp).
 Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 
+// ---- Products with a block-circulant W read from its generating columns ----
+// The two products of the Gauss–Seidel contact solve (contact/gauss_seidel.hpp) with a block-circulant
+// Delassus operator W, computed from its two generating columns (delassus_periodic_columns, a 4n x 2
+// matrix C with W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n)) instead of the dense 2n x 2n W:
+// C fits in the cache where W does not.
+//
+// Both give the result of the Eigen expression they replace bit for bit (tested): every entry gets the
+// same products and sums in the same order, only the memory they are read from and the vector width
+// differ. The loops are compiled for AVX2 and AVX-512 next to the baseline ISA (GCC function
+// multiversioning, chosen at load time) with floating-point contraction off, so no fused multiply-add
+// changes a rounding whatever the build host: the results do not depend on the ISA that runs them.
+
+/// y += W(:, 2k..2k+1) (d0, d1), as Eigen's y += W.middleCols<2>(2k) * Vector2d(d0, d1):
+/// y_i += C(s + i, 0) d0 + C(s + i, 1) d1 with s = 2 ((n - k) mod n).
+/// @param columns delassus_periodic_columns(W), 4n x 2;  @param k node, 0 <= k < n_nodes
+void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
+                               Eigen::VectorXd& y);
+
+/// y = q + W r, as Eigen evaluates that expression (y = q, then its column-major matrix-vector kernel:
+/// per block of columns, a sum over the block in column order, added to y).
+/// @param block_sums if not null, out: the per-block sums of W r (2n x n_blocks), from which
+///                   residual_from_block_sums gives q' + W r for another q' without the product
+void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& r, Eigen::VectorXd& y, Eigen::MatrixXd* block_sums = nullptr);
+
+/// y = q + W r from the block sums of W r that periodic_residual kept: bit for bit its result (and
+/// Eigen's q + W r), for O(n_c n_blocks) additions instead of the O(n_c^2) product.
+void residual_from_block_sums(const Eigen::VectorXd& q, const Eigen::MatrixXd& block_sums, Eigen::VectorXd& y);
+
 }  // namespace slidewave

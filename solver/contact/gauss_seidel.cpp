@@ -2,21 +2,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#include "contact/delassus.hpp"
 
 namespace slidewave {
 
 namespace {
 
-/// y += W(:, 2k..2k+1) delta with W's columns read from delassus_periodic_columns(W): the same products
-/// and sums, in the same order per entry, as Eigen's y += W.middleCols<2>(2k) * delta.
-void add_periodic_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, const Eigen::Vector2d& delta,
-                          Eigen::VectorXd& y) {
-  const Eigen::Index n_c = 2 * n_nodes, start = 2 * ((n_nodes - k) % n_nodes);
-  const double* __restrict c0 = columns.data() + start;
-  const double* __restrict c1 = columns.data() + columns.rows() + start;
-  double* __restrict out = y.data();
-  const double d0 = delta.x(), d1 = delta.y();
-  for (Eigen::Index i = 0; i < n_c; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
+/// y = q + W r, from W's generating columns when it is block-circulant (the same numbers bit for bit).
+/// With a workspace, from the block sums it kept when r is bit for bit the r they were computed for (a
+/// solve warm-started from the previous one's result), and kept for this r when `keep`.
+void compute_local_variables(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                             const Eigen::MatrixXd* periodic_columns, GaussSeidelWorkspace* workspace, bool keep,
+                             Eigen::VectorXd& y) {
+  if (!periodic_columns) {
+    y = q + W * r;
+    return;
+  }
+  const int n_nodes = static_cast<int>(q.size() / 2);
+  if (!workspace) {
+    periodic_residual(*periodic_columns, n_nodes, q, r, y);
+  } else if (workspace->r.size() == r.size() && r.size() > 0 &&
+             std::memcmp(workspace->r.data(), r.data(), sizeof(double) * r.size()) == 0) {
+    residual_from_block_sums(q, workspace->block_sums, y);
+  } else if (keep) {
+    periodic_residual(*periodic_columns, n_nodes, q, r, y, &workspace->block_sums);
+    workspace->r = r;
+  } else {
+    periodic_residual(*periodic_columns, n_nodes, q, r, y);
+  }
 }
 
 /// One pass of at most settings.max_iterations sweeps from the r passed in, each node's reaction moved
@@ -24,10 +39,11 @@ void add_periodic_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, co
 GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                         const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                         double relaxation, Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                        std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
+                                        std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns,
+                                        GaussSeidelWorkspace* workspace) {
   const int n_nodes = static_cast<int>(q.size() / 2);
   state.assign(n_nodes, ContactState::open);
-  y = q + W * r;
+  compute_local_variables(W, q, r, periodic_columns, workspace, false, y);
   std::vector<Eigen::Matrix2d> diagonal_blocks(n_nodes);
   for (int k = 0; k < n_nodes; ++k) diagonal_blocks[k] = W.block<2, 2>(2 * k, 2 * k);
 
@@ -59,7 +75,7 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
         const Eigen::Vector2d delta = relaxation == 1 ? change : Eigen::Vector2d(relaxation * change);
         r.segment<2>(2 * k) = relaxation == 1 ? local.r : Eigen::Vector2d(r_old + delta);
         if (periodic_columns)
-          add_periodic_columns(*periodic_columns, n_nodes, k, delta, y);
+          add_periodic_node_columns(*periodic_columns, n_nodes, k, delta.x(), delta.y(), y);
         else
           y.noalias() += W.middleCols<2>(2 * k) * delta;
         max_change = std::max(max_change, change.cwiseAbs().maxCoeff());
@@ -83,7 +99,7 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
     }
   }
   // Recompute y from scratch so that rounding drift of the in-place updates never reaches the output.
-  y = q + W * r;
+  compute_local_variables(W, q, r, periodic_columns, workspace, true, y);
   return report;
 }
 
@@ -92,14 +108,16 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                             std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
+                                             std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns,
+                                             GaussSeidelWorkspace* workspace) {
   const Eigen::VectorXd r_start = r;
-  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state, periodic_columns);
+  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state, periodic_columns, workspace);
   if (plain.converged) return plain;
   // Plain sweeps cycled (or are too slow): restart from the warm start, under-relaxed.
   r = r_start;
   GaussSeidelReport relaxed =
-      sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state, periodic_columns);
+      sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state, periodic_columns,
+                            workspace);
   relaxed.iterations += plain.iterations;
   return relaxed;
 }

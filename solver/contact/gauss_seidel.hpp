@@ -4,7 +4,7 @@
 // with the local Signorini–Coulomb law of coulomb_local.hpp at every node. Each sweep solves every
 // node exactly with the others frozen; y is updated in place (two columns of W per node), so a sweep
 // costs O(n^2) (O(n) memory traffic when W is block-circulant and its two generating columns are
-// passed: they fit in the cache where W does not). Warm-started from the r passed in.
+// passed: they fit in the cache where W does not; docs/contact-solver.md). Warm-started from the r passed in.
 // Convergence: max_k |r_k(new) - r_k(old)| <= tolerance * force_scale over one sweep.
 //
 // Prakash–Clifton bounds (a given bound g_k per closed node) make the local law discontinuous at
@@ -62,6 +62,14 @@ struct GaussSeidelSettings {
   double force_scale = 1.0;  ///< nominal nodal force (p0 h): residuals are relative to it
 };
 
+/// What one solve keeps for the next with the same block-circulant W: the block sums of W r for the r
+/// it returned (periodic_residual, contact/delassus.hpp). The next solve, warm-started from that r bit for
+/// bit (the time loop's case), gets its starting y = q + W r from them without the O(n_c^2) product.
+struct GaussSeidelWorkspace {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd block_sums;
+};
+
 /// @param W      Delassus operator (2n x 2n, symmetric positive definite)
 /// @param q      free local variables (r = 0)
 /// @param f      friction coefficient
@@ -72,12 +80,15 @@ struct GaussSeidelSettings {
 /// @param y      out: local variables q + W r
 /// @param state  out: per-node contact state
 /// @param periodic_columns  null, or delassus_periodic_columns(W) when W is block-circulant: the in-place
-///               updates of y then read W's columns from it (the same numbers and operations, so the same
-///               result bit for bit, without streaming all of W through the cache on every sweep)
+///               updates of y and the products y = q + W r then read W's columns from it
+///               (add_periodic_node_columns, periodic_residual: the same numbers and operations, so the
+///               same result bit for bit, without streaming all of W through the cache)
+/// @param workspace  null, or (with periodic_columns) the same object on every solve with this W
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                              Eigen::VectorXd& r, Eigen::VectorXd& y,
                                              std::vector<ContactState>& state,
-                                             const Eigen::MatrixXd* periodic_columns = nullptr);
+                                             const Eigen::MatrixXd* periodic_columns = nullptr,
+                                             GaussSeidelWorkspace* workspace = nullptr);
 
 }  // namespace slidewave

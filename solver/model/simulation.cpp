@@ -114,10 +114,11 @@ struct ContactStep {
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
-    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, y, loop.contact, &W_columns);
+    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, y, loop.contact, &W_columns, &workspace);
   }
   Eigen::VectorXd q, y, r_next, du;  ///< du: contact displacement increment of the step
   std::vector<double> bounds;
+  GaussSeidelWorkspace workspace;  ///< W r of the last solve, for the next one's warm start
 };
 
 }  // namespace

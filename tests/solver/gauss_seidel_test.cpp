@@ -276,5 +276,39 @@ TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolveBitForBit) {
   }
 }
 
+// A sequence of warm-started solves, as the time loop makes them, with a GaussSeidelWorkspace (the
+// starting y from the block sums the previous solve kept) gives the dense solves' results bit for bit;
+// every third solve starts from a perturbed r, which must not take the kept sums.
+TEST(GaussSeidel, WorkspaceOfWarmStartedSolvesGivesTheSameResultBitForBit) {
+  const LayerModel model(testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
+  const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff), model.mesh.n_contact());
+  const Eigen::MatrixXd columns = delassus_periodic_columns(W);
+  const int n = model.mesh.n_contact();
+  std::mt19937_64 generator(5);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd q(2 * n);
+  for (int k = 0; k < n; ++k) q(2 * k) = 0.02 * uniform(generator), q(2 * k + 1) = -0.025 + 0.03 * uniform(generator);
+  const GaussSeidelSettings settings{1e-12, 200, model.d.p0 * model.d.h};
+  Eigen::VectorXd r_dense = Eigen::VectorXd::Zero(2 * n), r_kept = r_dense, y_dense, y_kept;
+  std::vector<ContactState> state_dense, state_kept;
+  GaussSeidelWorkspace workspace;
+  for (int solve = 0; solve < 12; ++solve) {
+    for (int i = 0; i < 2 * n; ++i) q(i) += 1e-3 * uniform(generator);
+    if (solve % 3 == 2) {  // a warm start that is not the last result
+      const double shift = 1e-3 * model.d.p0 * model.d.h;
+      r_dense(1) += shift;
+      r_kept(1) += shift;
+    }
+    const auto a = solve_contact_gauss_seidel(W, q, 1.5, {}, settings, r_dense, y_dense, state_dense);
+    const auto b = solve_contact_gauss_seidel(W, q, 1.5, {}, settings, r_kept, y_kept, state_kept, &columns, &workspace);
+    ASSERT_TRUE(a.converged) << solve;
+    EXPECT_EQ(a.iterations, b.iterations) << solve;
+    EXPECT_EQ(r_dense, r_kept) << solve;
+    EXPECT_EQ(y_dense, y_kept) << solve;
+    EXPECT_EQ(state_dense, state_kept) << solve;
+    EXPECT_EQ(workspace.r, r_kept) << solve;
+  }
+}
+
 }  // namespace
 }  // namespace slidewave
