@@ -38,7 +38,7 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
   u_work_.resize(n);
   Ku_next_.resize(n);
   Ma_next_.resize(n_f);
-  acc_f_next_.resize(n_f);
+  K_fd_u_d_.resize(n_f);
 }
 
 HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
@@ -67,15 +67,27 @@ void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const
     Ku.noalias() = system_.K * u;
 }
 
+// The Newmark vector updates below are single loops over the free DOFs (one pass over memory instead of one
+// per vector expression). Each entry is computed with the same operations, rounded in the same order, as the
+// Eigen vector expressions of the formulas in the comments did, so the results are the same bits.
+
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   const int n_f = system_.n_free, n_c = system_.n_contact;
   const double a = hht_.alpha, dt = hht_.dt;
   u_d_next_ = u_d_next;
-  u_tilde_ = s.u.head(n_f) + dt * s.v.head(n_f) + dt * dt * (0.5 - hht_.beta) * s.acc.head(n_f);
-  Mu_tilde_ = s.Mu_f + dt * s.Mv_f + dt * dt * (0.5 - hht_.beta) * s.Ma_f;
-  rhs_.noalias() = hht_.mass_factor() * Mu_tilde_;
-  rhs_.noalias() -= (1 - a) * (system_.K_fd * u_d_next);
-  rhs_.noalias() -= a * s.Ku.head(n_f);
+  // Eigen folds the scalar into the sparse factor: ((1-a) K_fd) u_d, which rounds differently from (1-a) (K_fd u_d).
+  K_fd_u_d_.noalias() = (1 - a) * (system_.K_fd * u_d_next);
+  // u~ = u + dt v + c a;  M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
+  const double c = dt * dt * (0.5 - hht_.beta), mass = hht_.mass_factor();
+  const double *u = s.u.data(), *v = s.v.data(), *acc = s.acc.data(), *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(),
+               *Ma = s.Ma_f.data(), *Ku = s.Ku.data(), *Kd = K_fd_u_d_.data();
+  double *__restrict u_tilde = u_tilde_.data(), *__restrict Mu_tilde = Mu_tilde_.data(),
+                     *__restrict rhs = rhs_.data();
+  for (int i = 0; i < n_f; ++i) {
+    u_tilde[i] = u[i] + dt * v[i] + c * acc[i];
+    Mu_tilde[i] = Mu[i] + dt * Mv[i] + c * Ma[i];
+    rhs[i] = mass * Mu_tilde[i] - Kd[i] - a * Ku[i];
+  }
   if (w_previous_ != 0) rhs_.head(n_c) += w_previous_ * s.r;
 }
 
@@ -100,15 +112,37 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
     K_eff_->solve_into(rhs_, u_work_.head(n_f));
   }
   u_work_.tail(n_d) = u_d_next_;
-  acc_f_next_.noalias() = hht_.mass_factor() * (u_work_.head(n_f) - u_tilde_);
-  s.v.head(n_f) += dt * ((1 - hht_.gamma) * s.acc.head(n_f) + hht_.gamma * acc_f_next_);
-  s.acc.head(n_f) = acc_f_next_;
+  const double g = hht_.gamma, g_old = 1 - hht_.gamma, mass = hht_.mass_factor();
+  {
+    // a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1))
+    const double* u_next = u_work_.data();
+    const double* u_tilde = u_tilde_.data();
+    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data();
+    for (int i = 0; i < n_f; ++i) {
+      const double acc_next = mass * (u_next[i] - u_tilde[i]);
+      v[i] += dt * (g_old * acc[i] + g * acc_next);
+      acc[i] = acc_next;
+    }
+  }
 
   multiply_K(u_work_, Ku_next_);
-  Ma_next_ = -(1 - a) * Ku_next_.head(n_f) - a * s.Ku.head(n_f);
-  Ma_next_.head(n_c) += w_ * r_next + w_previous_ * s.r;
-  s.Mv_f += dt * ((1 - hht_.gamma) * s.Ma_f + hht_.gamma * Ma_next_);
-  s.Mu_f = Mu_tilde_ + hht_.beta * dt * dt * Ma_next_;
+  {
+    // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
+    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
+    const double k_next = -(1 - a), k_old = a, b = hht_.beta * dt * dt;
+    const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *Mu_tilde = Mu_tilde_.data(),
+                 *r_new = r_next.data(), *r_old = s.r.data();
+    double *__restrict Ma_next = Ma_next_.data(), *__restrict Ma = s.Ma_f.data(), *__restrict Mv = s.Mv_f.data(),
+                       *__restrict Mu = s.Mu_f.data();
+    const auto update = [&](int i, double Ma_i) {
+      Ma_next[i] = Ma_i;
+      Mv[i] += dt * (g_old * Ma[i] + g * Ma_i);
+      Mu[i] = Mu_tilde[i] + b * Ma_i;
+    };
+    for (int i = 0; i < n_c; ++i)  // the contact rows carry the forces
+      update(i, k_next * Ku_next[i] - k_old * Ku[i] + (w_ * r_new[i] + w_previous_ * r_old[i]));
+    for (int i = n_c; i < n_f; ++i) update(i, k_next * Ku_next[i] - k_old * Ku[i]);
+  }
   s.Ma_f.swap(Ma_next_);  // Ma_next_ is rewritten whole by the next step
   s.u.swap(u_work_);  // u_work_ keeps u(n): u_previous()
   r_previous_.swap(s.r);

@@ -99,7 +99,7 @@ class HHTStepper {
   /// Ku = K u (u and Ku distinct).
   void multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const;
   Eigen::VectorXd u_free_contact_, contact_load_;
-  Eigen::VectorXd u_d_next_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, acc_f_next_, r_previous_;
+  Eigen::VectorXd u_d_next_, K_fd_u_d_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, r_previous_;
 };
 
 }  // namespace slidewave
