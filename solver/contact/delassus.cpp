@@ -60,13 +60,13 @@ void add_two_columns(const double* __restrict c0, const double* __restrict c1, d
 /// unaligned by memcpy; its + and * are per lane, the same IEEE operations as on scalars.
 typedef double Lanes8 __attribute__((vector_size(64)));
 
-/// out_i = out_i + sum_j column_j[i] coefficient_j (or out_i = the sum, with `store`), the sum taken from 0
+/// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0
 /// in column order, i < n (one column block of Eigen's general_matrix_vector_product, ColMajor). Written over explicit vectors
 /// of 32 rows, whose partial sums stay in registers: left to itself, GCC vectorizes across the columns
 /// (gathers) instead.
 SLIDEWAVE_MULTIVERSIONED
 void add_column_block(const double* const* __restrict column, const double* __restrict coefficient, int n_columns,
-                      bool store, double* __restrict out, Eigen::Index n) {
+                      double* __restrict out, Eigen::Index n) {
   Eigen::Index i0 = 0;
   for (; i0 + 32 <= n; i0 += 32) {
     Lanes8 s0 = {}, s1 = {}, s2 = {}, s3 = {};
@@ -85,19 +85,13 @@ void add_column_block(const double* const* __restrict column, const double* __re
     }
     const Lanes8 sums[4] = {s0, s1, s2, s3};
     for (int v = 0; v < 4; ++v)
-      for (int t = 0; t < 8; ++t) out[i0 + 8 * v + t] = store ? sums[v][t] : out[i0 + 8 * v + t] + sums[v][t];
+      for (int t = 0; t < 8; ++t) out[i0 + 8 * v + t] += sums[v][t];
   }
   for (Eigen::Index i = i0; i < n; ++i) {
     double sum = 0;
     for (int j = 0; j < n_columns; ++j) sum += column[j][i] * coefficient[j];
-    out[i] = store ? sum : out[i] + sum;
+    out[i] += sum;
   }
-}
-
-/// out_i = out_i + s_i, i < n.
-SLIDEWAVE_MULTIVERSIONED
-void add_vector(const double* __restrict s, double* __restrict out, Eigen::Index n) {
-  for (Eigen::Index i = 0; i < n; ++i) out[i] += s[i];
 }
 
 /// Start of W(:, 2k) (and of W(:, 2k + 1) in the second column) within the stacked generating columns.
@@ -112,13 +106,12 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
 }
 
 void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
-                       Eigen::VectorXd& y, Eigen::MatrixXd* block_sums) {
+                       Eigen::VectorXd& y) {
   const Eigen::Index n_c = 2 * n_nodes;
   y = q;
   // Eigen 3.4's column blocking of the matrix-vector product (GeneralMatrixVector.h): the whole matrix
   // below 128 columns, else 16 columns while a column is under 32000 bytes, else 4.
   const int block = n_c < 128 ? static_cast<int>(n_c) : (n_c * static_cast<Eigen::Index>(sizeof(double)) < 32000 ? 16 : 4);
-  if (block_sums) block_sums->resize(n_c, (n_c + block - 1) / block);
   const double* column[128];
   for (Eigen::Index j0 = 0; j0 < n_c; j0 += block) {
     const int n_block = static_cast<int>(std::min<Eigen::Index>(block, n_c - j0));
@@ -126,19 +119,8 @@ void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen:
       const Eigen::Index col = j0 + j;
       column[j] = columns.data() + (col % 2) * columns.rows() + column_start(n_nodes, static_cast<int>(col / 2));
     }
-    if (block_sums) {  // the block's sum kept, then added: the same two roundings as adding it directly
-      double* sum = block_sums->col(j0 / block).data();
-      add_column_block(column, r.data() + j0, n_block, true, sum, n_c);
-      add_vector(sum, y.data(), n_c);
-    } else {
-      add_column_block(column, r.data() + j0, n_block, false, y.data(), n_c);
-    }
+    add_column_block(column, r.data() + j0, n_block, y.data(), n_c);
   }
-}
-
-void residual_from_block_sums(const Eigen::VectorXd& q, const Eigen::MatrixXd& block_sums, Eigen::VectorXd& y) {
-  y = q;
-  for (Eigen::Index b = 0; b < block_sums.cols(); ++b) add_vector(block_sums.col(b).data(), y.data(), y.size());
 }
 
 }  // namespace slidewave

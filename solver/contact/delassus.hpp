@@ -46,13 +46,7 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
 
 /// y = q + W r, as Eigen evaluates that expression (y = q, then its column-major matrix-vector kernel:
 /// per block of columns, a sum over the block in column order, added to y).
-/// @param block_sums if not null, out: the per-block sums of W r (2n x n_blocks), from which
-///                   residual_from_block_sums gives q' + W r for another q' without the product
 void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q,
-                       const Eigen::VectorXd& r, Eigen::VectorXd& y, Eigen::MatrixXd* block_sums = nullptr);
-
-/// y = q + W r from the block sums of W r that periodic_residual kept: bit for bit its result (and
-/// Eigen's q + W r), for O(n_c n_blocks) additions instead of the O(n_c^2) product.
-void residual_from_block_sums(const Eigen::VectorXd& q, const Eigen::MatrixXd& block_sums, Eigen::VectorXd& y);
+                       const Eigen::VectorXd& r, Eigen::VectorXd& y);
 
 }  // namespace slidewave

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "contact/delassus.hpp"
 
@@ -11,27 +10,12 @@ namespace slidewave {
 namespace {
 
 /// y = q + W r, from W's generating columns when it is block-circulant (the same numbers bit for bit).
-/// With a workspace, from the block sums it kept when r is bit for bit the r they were computed for (a
-/// solve warm-started from the previous one's result), and kept for this r when `keep`.
 void compute_local_variables(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
-                             const Eigen::MatrixXd* periodic_columns, GaussSeidelWorkspace* workspace, bool keep,
-                             Eigen::VectorXd& y) {
-  if (!periodic_columns) {
+                             const Eigen::MatrixXd* periodic_columns, Eigen::VectorXd& y) {
+  if (periodic_columns)
+    periodic_residual(*periodic_columns, static_cast<int>(q.size() / 2), q, r, y);
+  else
     y = q + W * r;
-    return;
-  }
-  const int n_nodes = static_cast<int>(q.size() / 2);
-  if (!workspace) {
-    periodic_residual(*periodic_columns, n_nodes, q, r, y);
-  } else if (workspace->r.size() == r.size() && r.size() > 0 &&
-             std::memcmp(workspace->r.data(), r.data(), sizeof(double) * r.size()) == 0) {
-    residual_from_block_sums(q, workspace->block_sums, y);
-  } else if (keep) {
-    periodic_residual(*periodic_columns, n_nodes, q, r, y, &workspace->block_sums);
-    workspace->r = r;
-  } else {
-    periodic_residual(*periodic_columns, n_nodes, q, r, y);
-  }
 }
 
 /// One pass of at most settings.max_iterations sweeps from the r passed in, each node's reaction moved
@@ -39,11 +23,10 @@ void compute_local_variables(const Eigen::MatrixXd& W, const Eigen::VectorXd& q,
 GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                         const std::vector<double>& bounds, const GaussSeidelSettings& settings,
                                         double relaxation, Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                        std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns,
-                                        GaussSeidelWorkspace* workspace) {
+                                        std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
   const int n_nodes = static_cast<int>(q.size() / 2);
   state.assign(n_nodes, ContactState::open);
-  compute_local_variables(W, q, r, periodic_columns, workspace, false, y);
+  compute_local_variables(W, q, r, periodic_columns, y);
   std::vector<Eigen::Matrix2d> diagonal_blocks(n_nodes);
   for (int k = 0; k < n_nodes; ++k) diagonal_blocks[k] = W.block<2, 2>(2 * k, 2 * k);
 
@@ -98,8 +81,6 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
       r_previous = r;
     }
   }
-  // Recompute y from scratch so that rounding drift of the in-place updates never reaches the output.
-  compute_local_variables(W, q, r, periodic_columns, workspace, true, y);
   return report;
 }
 
@@ -107,19 +88,21 @@ GaussSeidelReport sweep_until_converged(const Eigen::MatrixXd& W, const Eigen::V
 
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
-                                             Eigen::VectorXd& r, Eigen::VectorXd& y,
-                                             std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns,
-                                             GaussSeidelWorkspace* workspace) {
+                                             Eigen::VectorXd& r, Eigen::VectorXd* y_out,
+                                             std::vector<ContactState>& state, const Eigen::MatrixXd* periodic_columns) {
   const Eigen::VectorXd r_start = r;
-  const GaussSeidelReport plain = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state, periodic_columns, workspace);
-  if (plain.converged) return plain;
-  // Plain sweeps cycled (or are too slow): restart from the warm start, under-relaxed.
-  r = r_start;
-  GaussSeidelReport relaxed =
-      sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state, periodic_columns,
-                            workspace);
-  relaxed.iterations += plain.iterations;
-  return relaxed;
+  Eigen::VectorXd y;  // updated in place by the sweeps
+  GaussSeidelReport report = sweep_until_converged(W, q, f, bounds, settings, 1.0, r, y, state, periodic_columns);
+  if (!report.converged) {
+    // Plain sweeps cycled (or are too slow): restart from the warm start, under-relaxed.
+    r = r_start;
+    const int plain_iterations = report.iterations;
+    report = sweep_until_converged(W, q, f, bounds, settings, kFallbackRelaxation, r, y, state, periodic_columns);
+    report.iterations += plain_iterations;
+  }
+  // Recomputed from scratch (when asked for) so that rounding drift of the in-place updates never reaches it.
+  if (y_out) compute_local_variables(W, q, r, periodic_columns, *y_out);
+  return report;
 }
 
 }  // namespace slidewave

@@ -62,14 +62,6 @@ struct GaussSeidelSettings {
   double force_scale = 1.0;  ///< nominal nodal force (p0 h): residuals are relative to it
 };
 
-/// What one solve keeps for the next with the same block-circulant W: the block sums of W r for the r
-/// it returned (periodic_residual, contact/delassus.hpp). The next solve, warm-started from that r bit for
-/// bit (the time loop's case), gets its starting y = q + W r from them without the O(n_c^2) product.
-struct GaussSeidelWorkspace {
-  Eigen::VectorXd r;
-  Eigen::MatrixXd block_sums;
-};
-
 /// @param W      Delassus operator (2n x 2n, symmetric positive definite)
 /// @param q      free local variables (r = 0)
 /// @param f      friction coefficient
@@ -77,18 +69,16 @@ struct GaussSeidelWorkspace {
 ///               a cycling node falls back to f r_y (see above)
 /// @param settings at most max_iterations plain sweeps, then at most max_iterations under-relaxed ones
 /// @param r      in: warm start; out: reactions
-/// @param y      out: local variables q + W r
+/// @param y_out  null, or out: local variables q + W r (one more product: the time loop does not ask)
 /// @param state  out: per-node contact state
 /// @param periodic_columns  null, or delassus_periodic_columns(W) when W is block-circulant: the in-place
 ///               updates of y and the products y = q + W r then read W's columns from it
 ///               (add_periodic_node_columns, periodic_residual: the same numbers and operations, so the
 ///               same result bit for bit, without streaming all of W through the cache)
-/// @param workspace  null, or (with periodic_columns) the same object on every solve with this W
 GaussSeidelReport solve_contact_gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
                                              const std::vector<double>& bounds, const GaussSeidelSettings& settings,
-                                             Eigen::VectorXd& r, Eigen::VectorXd& y,
+                                             Eigen::VectorXd& r, Eigen::VectorXd* y_out,
                                              std::vector<ContactState>& state,
-                                             const Eigen::MatrixXd* periodic_columns = nullptr,
-                                             GaussSeidelWorkspace* workspace = nullptr);
+                                             const Eigen::MatrixXd* periodic_columns = nullptr);
 
 }  // namespace slidewave

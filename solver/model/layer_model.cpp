@@ -70,8 +70,7 @@ PreloadState solve_preload(const LayerModel& model) {
     Eigen::VectorXd rhs = -(model.K_fd * u_d);
     Eigen::VectorXd q = free_contact_displacement(u_d);
     for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
-    Eigen::VectorXd y;
-    const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, y, state);
+    const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, nullptr, state);
     if (!report.converged) throw std::runtime_error("preload: the quasi-static contact solve did not converge");
     iterations += report.iterations;
     Eigen::VectorXd u(model.n_free + model.n_top);

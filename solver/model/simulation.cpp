@@ -107,18 +107,17 @@ void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
 struct ContactStep {
-  explicit ContactStep(int n_c) : q(n_c), y(n_c), r_next(n_c), du(n_c) {}
+  explicit ContactStep(int n_c) : q(n_c), r_next(n_c), du(n_c) {}
   GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::MatrixXd& W_columns, const Eigen::VectorXd& u_free,
                           double f, const FrictionLaw& law, const GaussSeidelSettings& settings, LoopState& loop) {
     q = u_free.head(q.size());
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
-    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, y, loop.contact, &W_columns, &workspace);
+    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, nullptr, loop.contact, &W_columns);
   }
-  Eigen::VectorXd q, y, r_next, du;  ///< du: contact displacement increment of the step
+  Eigen::VectorXd q, r_next, du;  ///< du: contact displacement increment of the step
   std::vector<double> bounds;
-  GaussSeidelWorkspace workspace;  ///< W r of the last solve, for the next one's warm start
 };
 
 }  // namespace

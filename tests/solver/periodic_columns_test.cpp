@@ -1,5 +1,5 @@
 // Products with a block-circulant W read from its generating columns (contact/delassus.hpp:
-// add_periodic_node_columns, periodic_residual, residual_from_block_sums) against the Eigen expressions they replace, bit for bit,
+// add_periodic_node_columns, periodic_residual) against the Eigen expressions they replace, bit for bit,
 // on random block-circulant W of sizes that take each of Eigen's column blockings (all columns below
 // 128, 16 below 4000 rows, 4 above) and odd tails of the vector loops.
 #include <gtest/gtest.h>
@@ -68,22 +68,6 @@ TEST(PeriodicColumns, NodeUpdateEqualsEigenBitForBit) {
       add_periodic_node_columns(columns, n, k, delta.x(), delta.y(), y);
     }
     EXPECT_TRUE(same_bits(y, expected)) << "n = " << n << ", max difference " << (y - expected).cwiseAbs().maxCoeff();
-  }
-}
-
-TEST(PeriodicColumns, ResidualFromKeptBlockSumsEqualsEigenBitForBit) {
-  std::mt19937_64 generator(3);
-  for (int n : kNodeCounts) {
-    const Eigen::MatrixXd W = random_block_circulant(n, generator);
-    const Eigen::MatrixXd columns = delassus_periodic_columns(W);
-    const Eigen::VectorXd q = random_vector(2 * n, generator), r = random_vector(2 * n, generator);
-    Eigen::VectorXd y;
-    Eigen::MatrixXd block_sums;
-    periodic_residual(columns, n, q, r, y, &block_sums);
-    EXPECT_TRUE(same_bits(y, Eigen::VectorXd(q + W * r))) << "n = " << n;
-    const Eigen::VectorXd q_next = random_vector(2 * n, generator);
-    residual_from_block_sums(q_next, block_sums, y);
-    EXPECT_TRUE(same_bits(y, Eigen::VectorXd(q_next + W * r))) << "n = " << n;
   }
 }
 
