@@ -46,8 +46,6 @@ def ensemble_macros(summary, path, prefix="ens"):
         f"{prefix}Runs": get(summary, "runs", path),
         f"{prefix}RunsWithFront": get(summary, "runs_with_front", path),
         f"{prefix}RunsOpposite": get(summary, "runs_opposite", path),
-        f"{prefix}SeedsMin": get(summary, "seeds_per_cell_min", path),
-        f"{prefix}SeedsMax": get(summary, "seeds_per_cell_max", path),
         f"{prefix}SeedsRange": seeds_range(get(summary, "seeds_per_cell_min", path),
                                            get(summary, "seeds_per_cell_max", path)),
         f"{prefix}WithinSeedOne": get(summary, "within_tol_seed1", path),

@@ -55,7 +55,7 @@ def test_numbers_of_the_section(tables, tmp_path):
                      tables / "finer_summary.json", "--finer-mesh", 128, "-o", out)
     assert result.returncode == 0, result.stderr
     macros = macros_of(out)
-    assert macros["ensRuns"] == "9" and macros["ensCells"] == "3" and macros["ensSeedsMax"] == "3"
+    assert macros["ensRuns"] == "9" and macros["ensCells"] == "3" and macros["ensSeedsRange"] == "3"
     # nu = 0.2, f = 1.5: mean 0.86 vs 0.882 -> -2.5 %, within; the others are not.
     assert macros["ensHighFMeanDev"] == "-2.5" and macros["ensWithinMean"] == "1"
     assert macros["envWithin"] == "1" and macros["envCells"] == "3"
