@@ -6,9 +6,11 @@
 // "correction" the loaded half plus the Newmark update.
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2 4 6] [--t-end 1300]
 //                                      [--nu 0.2] [--f 1.5] [--solver circulant|spectral|cholmod]
-//                                      [--threads N] [--stream FOLDER [--checkpoint-interval S]]
+//                                      [--threads N] [--all-stick iterate|exact]
+//                                      [--stream FOLDER [--checkpoint-interval S]]
 // --threads sets numerics.threads (the thread team of one circulant/spectral solve; CHOLMOD's BLAS is
-// left as the process starts).
+// left as the process starts). --all-stick sets contact.all_stick (contact/all_stick.hpp); sweeps/step is the
+// mean count of Gauss–Seidel sweeps per step (0 on a step solved by the exact all-stick solution).
 // --stream writes the run as `slidewave run` does (RUN.partial.h5 streamed, checkpoints every S s of
 // wall time, RUN.h5 put in place; io/run_session.hpp) into FOLDER/bench_H<n>.h5, so that ms/step
 // includes the output; without it nothing is written (the rows stay in memory).
@@ -104,6 +106,7 @@ int main(int argc, char** argv) {
   std::string stream_folder;
   double checkpoint_interval = 300;
   int threads = 1;
+  bool exact_all_stick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -120,6 +123,9 @@ int main(int argc, char** argv) {
       stream_folder = argv[++i];
     } else if (a == "--threads" && i + 1 < argc && std::atoi(argv[i + 1]) >= 1) {
       threads = std::atoi(argv[++i]);
+    } else if (a == "--all-stick" && i + 1 < argc &&
+               (std::strcmp(argv[i + 1], "iterate") == 0 || std::strcmp(argv[i + 1], "exact") == 0)) {
+      exact_all_stick = std::strcmp(argv[++i], "exact") == 0;
     } else if (a == "--checkpoint-interval" && i + 1 < argc) {
       checkpoint_interval = std::atof(argv[++i]);
     } else if (a == "--solver" && i + 1 < argc && (solver_name = argv[++i], solver_name == "circulant" ||
@@ -128,20 +134,20 @@ int main(int argc, char** argv) {
                : solver_name == "spectral" ? slidewave::LinearSolverKind::spectral
                                            : slidewave::LinearSolverKind::circulant;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--threads N] [--all-stick iterate|exact] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
   if (lambdas.empty()) lambdas = {2};
 
-  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, output %s\n", nu, f, t_end,
-              solver_name.c_str(), threads, threads == 1 ? "" : "s",
+  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, all-stick %s, output %s\n", nu, f,
+              t_end, solver_name.c_str(), threads, threads == 1 ? "" : "s", exact_all_stick ? "exact" : "iterate",
               stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
                                                              std::to_string(checkpoint_interval) + " s").c_str());
-  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %8s %8s\n", "H/h", "lam/H", "n_dofs",
+  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s\n", "H/h", "lam/H", "n_dofs",
               "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s",
-              "1solve_ms", "Ku_ms", "step/slv", "setup_s", "peak_MB");
+              "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "peak_MB");
   for (double lambda_over_H : lambdas)
   for (int n : resolutions) {
     slidewave::RunConfig config;
@@ -152,6 +158,7 @@ int main(int argc, char** argv) {
     config.time.t_end = t_end;
     config.numerics.linear_solver = solver;
     config.numerics.threads = threads;
+    config.contact.exact_all_stick = exact_all_stick;
     const slidewave::LayerModel model(config);
     config.output.checkpoint_interval = checkpoint_interval;
     slidewave::StepProfile profile;
@@ -169,10 +176,11 @@ int main(int argc, char** argv) {
     const double per_step = (total - profile.setup) / profile.steps;
     const double solve = one_solve_seconds(model);
     const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
-    std::printf("%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %8.2f %8.1f\n", n,
+    std::printf("%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.1f\n", n,
                 lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
                 ms(profile.correction), ms(profile.diagnostics), ms(output_seconds), 1e3 * per_step, 1 / per_step,
-                1e3 * solve, 1e3 * stiffness_product_seconds(model), per_step / solve, profile.setup, peak_rss_mb());
+                1e3 * solve, 1e3 * stiffness_product_seconds(model), per_step / solve,
+                static_cast<double>(profile.contact_sweeps) / profile.steps, profile.setup, peak_rss_mb());
     std::fflush(stdout);
   }
   return 0;

@@ -168,6 +168,12 @@ std::vector<ConfigKey> make_table() {
               "is followed by one under-relaxed pass (omega 0.5) of as many sweeps, after which the step is "
               "an error (solver/contact/gauss_seidel.hpp)",
               [](auto& c) -> auto& { return c.contact.max_iterations; }),
+      choice("contact", "all_stick", {{"iterate", false}, {"exact", true}},
+             "`iterate`: every step's contact problem is solved by Gauss–Seidel sweeps; `exact`: after a step "
+             "whose nodes all stuck, first the exact all-stick solution r = -W^-1 q (one product), kept when "
+             "every node is closed and inside its friction bound, else the same sweeps. Sweeps and `exact` "
+             "differ within contact.tolerance, which this chaotic problem amplifies after slip onset",
+             [](auto& c) -> auto& { return c.contact.exact_all_stick; }),
 
       number("perturbation", "amplitude", closed(0), unbounded, "",
              "random initial displacement of the free nodes, relative to the preshear top displacement",

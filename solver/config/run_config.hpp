@@ -40,7 +40,12 @@ struct TimeConfig {
   std::optional<double> stop_after_opening;
   long long max_steps = 20000000;  ///< a longer run is rejected before it starts (exit 2)
 };
-struct ContactConfig { double tolerance = 1e-10; int max_iterations = 2000; };
+struct ContactConfig {
+  double tolerance = 1e-10;
+  int max_iterations = 2000;
+  /// try the exact all-stick solution r = -W^{-1} q first while the interface sticks (contact/all_stick.hpp)
+  bool exact_all_stick = false;
+};
 struct PerturbationConfig { double amplitude = 1e-5; long long seed = 1; };
 struct NumericsConfig {
   /// circulant: FFT in x (exact for the uniform periodic mesh, ~20x faster); cholmod: general sparse path;
