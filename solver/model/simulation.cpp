@@ -188,8 +188,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     const GaussSeidelReport report = contact.solve(W, W_columns, u_free, c.friction.f, *friction, settings, loop);
     if (!report.converged) { failure = "contact_not_converged"; break; }
     watch.lap(&StepProfile::contact);
-    // 4c. Correction with r(n+1) and Newmark update.
-    stepper.correct(contact.r_next, s);
+    // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
+    const Eigen::VectorXd u_d_following =
+        m.top_displacement(pre.u_x_top + m.d.V0 * ((loop.step + 2) * hht.dt), c.loading.Uy_over_H * m.d.H);
+    stepper.correct(contact.r_next, s, &u_d_following);
     watch.lap(&StepProfile::correction);
     // 4d. Energy ledger, friction memory, output rows, first opening.
     ++loop.step;

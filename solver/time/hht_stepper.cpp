@@ -72,13 +72,16 @@ void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const
 // Eigen vector expressions of the formulas in the comments did, so the results are the same bits.
 
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
-  const int n_f = system_.n_free, n_c = system_.n_contact;
-  const double a = hht_.alpha, dt = hht_.dt;
-  u_d_next_ = u_d_next;
-  // Eigen folds the scalar into the sparse factor: ((1-a) K_fd) u_d, which rounds differently from (1-a) (K_fd u_d).
-  K_fd_u_d_.noalias() = (1 - a) * (system_.K_fd * u_d_next);
+  if (predicted_ && u_d_next == u_d_next_) {  // done by the last correct(), from this state and this u_d
+    predicted_ = false;
+    return;
+  }
+  predicted_ = false;
+  const int n_f = system_.n_free;
+  const double dt = hht_.dt;
+  prescribe(u_d_next);
   // u~ = u + dt v + c a;  M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
-  const double c = dt * dt * (0.5 - hht_.beta), mass = hht_.mass_factor();
+  const double c = dt * dt * (0.5 - hht_.beta), mass = hht_.mass_factor(), a = hht_.alpha;
   const double *u = s.u.data(), *v = s.v.data(), *acc = s.acc.data(), *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(),
                *Ma = s.Ma_f.data(), *Ku = s.Ku.data(), *Kd = K_fd_u_d_.data();
   double *__restrict u_tilde = u_tilde_.data(), *__restrict Mu_tilde = Mu_tilde_.data(),
@@ -88,7 +91,17 @@ void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
     Mu_tilde[i] = Mu[i] + dt * Mv[i] + c * Ma[i];
     rhs[i] = mass * Mu_tilde[i] - Kd[i] - a * Ku[i];
   }
-  if (w_previous_ != 0) rhs_.head(n_c) += w_previous_ * s.r;
+  add_previous_contact_forces(s.r);
+}
+
+void HHTStepper::prescribe(const Eigen::VectorXd& u_d_next) {
+  u_d_next_ = u_d_next;
+  // Eigen folds the scalar into the sparse factor: ((1-a) K_fd) u_d, which rounds differently from (1-a) (K_fd u_d).
+  K_fd_u_d_.noalias() = (1 - hht_.alpha) * (system_.K_fd * u_d_next);
+}
+
+void HHTStepper::add_previous_contact_forces(const Eigen::VectorXd& r) {
+  if (w_previous_ != 0) rhs_.head(system_.n_contact) += w_previous_ * r;
 }
 
 const Eigen::VectorXd& HHTStepper::solve_free() {
@@ -101,7 +114,7 @@ const Eigen::VectorXd& HHTStepper::solve_free() {
   return u_free_contact_;
 }
 
-void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
+void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen::VectorXd* u_d_following) {
   const int n_f = system_.n_free, n_c = system_.n_contact, n_d = system_.n_prescribed;
   const double a = hht_.alpha, dt = hht_.dt;
   if (split_) {
@@ -112,32 +125,44 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
     K_eff_->solve_into(rhs_, u_work_.head(n_f));
   }
   u_work_.tail(n_d) = u_d_next_;
+  // With u_d_following, the loops below also do the following step's predict() (the same operations on the
+  // values they have just computed, so the same bits), which then has nothing left to do: one pass over
+  // the step's vectors instead of two.
+  const bool predict_following = u_d_following != nullptr;
   const double g = hht_.gamma, g_old = 1 - hht_.gamma, mass = hht_.mass_factor();
+  const double c = dt * dt * (0.5 - hht_.beta);
   {
-    // a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1))
+    // a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1));  [u~ of the next step]
     const double* u_next = u_work_.data();
-    const double* u_tilde = u_tilde_.data();
-    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data();
+    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data(), *__restrict u_tilde = u_tilde_.data();
     for (int i = 0; i < n_f; ++i) {
       const double acc_next = mass * (u_next[i] - u_tilde[i]);
       v[i] += dt * (g_old * acc[i] + g * acc_next);
       acc[i] = acc_next;
+      if (predict_following) u_tilde[i] = u_next[i] + dt * v[i] + c * acc_next;
     }
   }
 
   multiply_K(u_work_, Ku_next_);
+  if (predict_following) prescribe(*u_d_following);
   {
     // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
-    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
+    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1);
+    // [M u~ and the free solve's right-hand side of the next step]
     const double k_next = -(1 - a), k_old = a, b = hht_.beta * dt * dt;
-    const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *Mu_tilde = Mu_tilde_.data(),
-                 *r_new = r_next.data(), *r_old = s.r.data();
+    const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *r_new = r_next.data(), *r_old = s.r.data(),
+                 *Kd = K_fd_u_d_.data();
     double *__restrict Ma_next = Ma_next_.data(), *__restrict Ma = s.Ma_f.data(), *__restrict Mv = s.Mv_f.data(),
-                       *__restrict Mu = s.Mu_f.data();
+                       *__restrict Mu = s.Mu_f.data(), *__restrict Mu_tilde = Mu_tilde_.data(),
+                       *__restrict rhs = rhs_.data();
     const auto update = [&](int i, double Ma_i) {
       Ma_next[i] = Ma_i;
       Mv[i] += dt * (g_old * Ma[i] + g * Ma_i);
       Mu[i] = Mu_tilde[i] + b * Ma_i;
+      if (predict_following) {
+        Mu_tilde[i] = Mu[i] + dt * Mv[i] + c * Ma_i;
+        rhs[i] = mass * Mu_tilde[i] - Kd[i] - a * Ku_next[i];
+      }
     };
     for (int i = 0; i < n_c; ++i)  // the contact rows carry the forces
       update(i, k_next * Ku_next[i] - k_old * Ku[i] + (w_ * r_new[i] + w_previous_ * r_old[i]));
@@ -148,6 +173,10 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s) {
   r_previous_.swap(s.r);
   s.r = r_next;
   s.Ku.swap(Ku_next_);
+  if (predict_following) {
+    add_previous_contact_forces(s.r);
+    predicted_ = true;
+  }
 }
 
 }  // namespace slidewave

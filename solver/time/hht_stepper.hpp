@@ -70,13 +70,16 @@ class HHTStepper {
   HHTState initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
                          const LinearSolver& M_ff) const;
 
-  /// Predictor and right-hand side of the free solve for the prescribed displacement u_d(n+1).
+  /// Predictor and right-hand side of the free solve for the prescribed displacement u_d(n+1). Nothing to do
+  /// when the last correct() was given this u_d as u_d_following (and the state was not changed since).
   void predict(const HHTState& state, const Eigen::VectorXd& u_d_next);
   /// Free solve (r(n+1) = 0): its displacement at the contact DOFs (n_contact entries), valid until the next
   /// predict().
   const Eigen::VectorXd& solve_free();
   /// Correction with the contact forces r(n+1), Newmark update: the state moves to time n+1.
-  void correct(const Eigen::VectorXd& r_next, HHTState& state);
+  /// @param u_d_following  null, or u_d(n+2): then the same loops also do predict(state, *u_d_following)
+  ///                       (same bits), and that call returns at once; the state must not change in between
+  void correct(const Eigen::VectorXd& r_next, HHTState& state, const Eigen::VectorXd* u_d_following = nullptr);
 
   /// Displacement and contact forces before the last correct() (time n).
   const Eigen::VectorXd& u_previous() const { return u_work_; }
@@ -98,6 +101,11 @@ class HHTStepper {
   std::unique_ptr<StencilProduct> K_stencil_;  ///< null when K is not a periodic stencil
   /// Ku = K u (u and Ku distinct).
   void multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const;
+  /// u_d(n+1) and (1-a) K_fd u_d(n+1), the prescribed part of the free solve's right-hand side.
+  void prescribe(const Eigen::VectorXd& u_d_next);
+  /// rhs += a' C^T r(n), the last of the right-hand side.
+  void add_previous_contact_forces(const Eigen::VectorXd& r);
+  bool predicted_ = false;  ///< the last correct() did the predict() of the step that follows
   Eigen::VectorXd u_free_contact_, contact_load_;
   Eigen::VectorXd u_d_next_, K_fd_u_d_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, r_previous_;
 };

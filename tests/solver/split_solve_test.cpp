@@ -100,22 +100,26 @@ struct OneStep {
 
   /// Two steps (so that the carried r(n) and K u(n) enter too) with contact forces r_1, r_2.
   /// load_factor scales r_1, r_2 (1: the step under test; 0.9 stands for a wrong weight w).
+  /// fused: each correct() also does the next step's predictor (HHTStepper::correct's u_d_following).
   HHTState run(std::unique_ptr<LinearSolver> K_eff, bool one_pass, bool alpha_weighted, Eigen::VectorXd* u_free_1,
-               double load_factor = 1) const {
+               double load_factor = 1, bool fused = false) const {
     HHTStepper stepper(system, hht, alpha_weighted, std::move(K_eff), one_pass);
     Eigen::VectorXd v = Eigen::VectorXd::Zero(m.n_free + m.n_top);
     for (int i = 0; i < m.mesh.n_x; ++i) v(m.n_free + 2 * i) = m.d.V0;
     HHTState s = stepper.initial_state(pre.u, v, pre.r, SparseCholesky(m.M_ff));
     const int n_c = m.n_contact_dofs;
+    const auto u_d = [&](int n) {
+      return m.top_displacement(pre.u_x_top + 1e3 * m.d.V0 * (n * hht.dt), m.config.loading.Uy_over_H * m.d.H);
+    };
     for (int n = 1; n <= 2; ++n) {
-      const double t = n * hht.dt;
-      stepper.predict(s, m.top_displacement(pre.u_x_top + 1e3 * m.d.V0 * t, m.config.loading.Uy_over_H * m.d.H));
+      stepper.predict(s, u_d(n));
       const Eigen::VectorXd u_free = stepper.solve_free();
       EXPECT_EQ(u_free.size(), n_c);
       if (n == 1) *u_free_1 = u_free;
       // Reactions of the preload with a node-to-node variation of their own size.
       const Eigen::VectorXd r = load_factor * (pre.r + pre.r.lpNorm<Eigen::Infinity>() * random_vector(n_c, 10 + n));
-      stepper.correct(r, s);
+      const Eigen::VectorXd u_d_following = u_d(n + 1);
+      stepper.correct(r, s, fused ? &u_d_following : nullptr);
     }
     return s;
   }
@@ -144,6 +148,31 @@ TEST(SplitSolve, OneStepEqualsTheTwoSolveStep) {
       EXPECT_LE(relative_difference(one.Ma_f, reference->Ma_f), 1e-10) << where;
     }
   }
+}
+
+// The next step's predictor done inside the correction's loops (the time loop's way) gives the same bits
+// as a predict() of its own, on both paths and for both contact weightings.
+TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
+  const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 8}}}}));
+  const OneStep step(m);
+  for (bool one_pass : {false, true})
+    for (bool alpha_weighted : {true, false}) {
+      const auto circulant = [&] { return std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y); };
+      Eigen::VectorXd free_apart, free_fused;
+      const HHTState apart = step.run(circulant(), one_pass, alpha_weighted, &free_apart, 1, false);
+      const HHTState fused = step.run(circulant(), one_pass, alpha_weighted, &free_fused, 1, true);
+      const std::string where = std::string(one_pass ? "one pass" : "two solves") + (alpha_weighted ? ", alpha" : ", end");
+      EXPECT_EQ(fused.u, apart.u) << where;
+      EXPECT_EQ(fused.v, apart.v) << where;
+      EXPECT_EQ(fused.acc, apart.acc) << where;
+      EXPECT_EQ(fused.Ku, apart.Ku) << where;
+      EXPECT_EQ(fused.Mu_f, apart.Mu_f) << where;
+      EXPECT_EQ(fused.Mv_f, apart.Mv_f) << where;
+      EXPECT_EQ(fused.Ma_f, apart.Ma_f) << where;
+      // And the comparison can fail: a step with other forces differs.
+      Eigen::VectorXd unused;
+      EXPECT_NE(step.run(circulant(), one_pass, alpha_weighted, &unused, 0.9, true).u, apart.u) << where;
+    }
 }
 
 TEST(SplitSolve, OnePassNeedsASplitSolverOnTheContactDofs) {
