@@ -1,5 +1,6 @@
 #include "time/hht_stepper.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -31,14 +32,20 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
   const int n_f = system.n_free, n = system.n_free + system.n_prescribed;
   u_free_contact_.resize(system.n_contact);
   contact_load_.resize(system.n_contact);
-  u_tilde_.resize(n_f);
-  Mu_tilde_.resize(n_f);
   rhs_.resize(n_f);
   u_free_.resize(n_f);
   u_work_.resize(n);
   Ku_next_.resize(n);
-  Ma_next_.resize(n_f);
-  K_fd_u_d_.resize(n_f);
+  K_fd_u_d_ = Eigen::VectorXd::Zero(n_f);
+  // Rows of K_fd with an entry: [coupled_rows_begin_, coupled_rows_end_).
+  const int* row_start = system.K_fd.outerIndexPtr();
+  const int* row_count = system.K_fd.innerNonZeroPtr();  // null when compressed
+  for (int i = 0; i < n_f; ++i)
+    if (row_count ? row_count[i] > 0 : row_start[i + 1] > row_start[i]) {
+      coupled_rows_end_ = i + 1;
+      if (coupled_rows_begin_ > i) coupled_rows_begin_ = i;
+    }
+  coupled_rows_begin_ = std::min(coupled_rows_begin_, coupled_rows_end_);
 }
 
 HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
@@ -69,7 +76,9 @@ void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const
 
 // The Newmark vector updates below are single loops over the free DOFs (one pass over memory instead of one
 // per vector expression). Each entry is computed with the same operations, rounded in the same order, as the
-// Eigen vector expressions of the formulas in the comments did, so the results are the same bits.
+// Eigen vector expressions of the formulas in the comments did, so the results are the same bits. The
+// predictor u~ = u + dt v + c a and its mass product M u~ are not stored: the correction recomputes them
+// from the state, which has not changed since the predictor (the same operations, the same bits).
 
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   if (predicted_ && u_d_next == u_d_next_) {  // done by the last correct(), from this state and this u_d
@@ -80,24 +89,23 @@ void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   const int n_f = system_.n_free;
   const double dt = hht_.dt;
   prescribe(u_d_next);
-  // u~ = u + dt v + c a;  M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
+  // M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
   const double c = dt * dt * (0.5 - hht_.beta), mass = hht_.mass_factor(), a = hht_.alpha;
-  const double *u = s.u.data(), *v = s.v.data(), *acc = s.acc.data(), *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(),
-               *Ma = s.Ma_f.data(), *Ku = s.Ku.data(), *Kd = K_fd_u_d_.data();
-  double *__restrict u_tilde = u_tilde_.data(), *__restrict Mu_tilde = Mu_tilde_.data(),
-                     *__restrict rhs = rhs_.data();
-  for (int i = 0; i < n_f; ++i) {
-    u_tilde[i] = u[i] + dt * v[i] + c * acc[i];
-    Mu_tilde[i] = Mu[i] + dt * Mv[i] + c * Ma[i];
-    rhs[i] = mass * Mu_tilde[i] - Kd[i] - a * Ku[i];
-  }
+  const double *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(), *Ma = s.Ma_f.data(), *Ku = s.Ku.data(),
+               *Kd = K_fd_u_d_.data();
+  double* __restrict rhs = rhs_.data();
+  for (int i = 0; i < n_f; ++i) rhs[i] = mass * (Mu[i] + dt * Mv[i] + c * Ma[i]) - Kd[i] - a * Ku[i];
   add_previous_contact_forces(s.r);
 }
 
 void HHTStepper::prescribe(const Eigen::VectorXd& u_d_next) {
   u_d_next_ = u_d_next;
   // Eigen folds the scalar into the sparse factor: ((1-a) K_fd) u_d, which rounds differently from (1-a) (K_fd u_d).
-  K_fd_u_d_.noalias() = (1 - hht_.alpha) * (system_.K_fd * u_d_next);
+  // Only the rows that couple to prescribed DOFs (the layer's top row of free nodes) are computed: the
+  // product is row by row, and the others stay the exact zeros it would give them.
+  K_fd_u_d_.segment(coupled_rows_begin_, coupled_rows_end_ - coupled_rows_begin_).noalias() =
+      (1 - hht_.alpha) *
+      (system_.K_fd.middleRows(coupled_rows_begin_, coupled_rows_end_ - coupled_rows_begin_) * u_d_next);
 }
 
 void HHTStepper::add_previous_contact_forces(const Eigen::VectorXd& r) {
@@ -125,50 +133,46 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen
     K_eff_->solve_into(rhs_, u_work_.head(n_f));
   }
   u_work_.tail(n_d) = u_d_next_;
-  // With u_d_following, the loops below also do the following step's predict() (the same operations on the
-  // values they have just computed, so the same bits), which then has nothing left to do: one pass over
-  // the step's vectors instead of two.
-  const bool predict_following = u_d_following != nullptr;
   const double g = hht_.gamma, g_old = 1 - hht_.gamma, mass = hht_.mass_factor();
   const double c = dt * dt * (0.5 - hht_.beta);
   {
-    // a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1));  [u~ of the next step]
-    const double* u_next = u_work_.data();
-    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data(), *__restrict u_tilde = u_tilde_.data();
+    // u~ = u + dt v + c a;  a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1))
+    const double *u_next = u_work_.data(), *u = s.u.data();
+    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data();
     for (int i = 0; i < n_f; ++i) {
-      const double acc_next = mass * (u_next[i] - u_tilde[i]);
+      const double u_tilde = u[i] + dt * v[i] + c * acc[i];
+      const double acc_next = mass * (u_next[i] - u_tilde);
       v[i] += dt * (g_old * acc[i] + g * acc_next);
       acc[i] = acc_next;
-      if (predict_following) u_tilde[i] = u_next[i] + dt * v[i] + c * acc_next;
     }
   }
 
   multiply_K(u_work_, Ku_next_);
+  // With u_d_following, the loop below also does the following step's predict() (the same operations on the
+  // values it has just computed, so the same bits), which then has nothing left to do: one pass over the
+  // mass products instead of two.
+  const bool predict_following = u_d_following != nullptr;
   if (predict_following) prescribe(*u_d_following);
   {
     // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
-    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1);
-    // [M u~ and the free solve's right-hand side of the next step]
+    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
+    // [and the next step's rhs from M u~ = M u + dt M v + c M a at n+1]
     const double k_next = -(1 - a), k_old = a, b = hht_.beta * dt * dt;
     const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *r_new = r_next.data(), *r_old = s.r.data(),
                  *Kd = K_fd_u_d_.data();
-    double *__restrict Ma_next = Ma_next_.data(), *__restrict Ma = s.Ma_f.data(), *__restrict Mv = s.Mv_f.data(),
-                       *__restrict Mu = s.Mu_f.data(), *__restrict Mu_tilde = Mu_tilde_.data(),
+    double *__restrict Ma = s.Ma_f.data(), *__restrict Mv = s.Mv_f.data(), *__restrict Mu = s.Mu_f.data(),
                        *__restrict rhs = rhs_.data();
     const auto update = [&](int i, double Ma_i) {
-      Ma_next[i] = Ma_i;
+      const double Mu_tilde = Mu[i] + dt * Mv[i] + c * Ma[i];
       Mv[i] += dt * (g_old * Ma[i] + g * Ma_i);
-      Mu[i] = Mu_tilde[i] + b * Ma_i;
-      if (predict_following) {
-        Mu_tilde[i] = Mu[i] + dt * Mv[i] + c * Ma_i;
-        rhs[i] = mass * Mu_tilde[i] - Kd[i] - a * Ku_next[i];
-      }
+      Ma[i] = Ma_i;
+      Mu[i] = Mu_tilde + b * Ma_i;
+      if (predict_following) rhs[i] = mass * (Mu[i] + dt * Mv[i] + c * Ma_i) - Kd[i] - a * Ku_next[i];
     };
     for (int i = 0; i < n_c; ++i)  // the contact rows carry the forces
       update(i, k_next * Ku_next[i] - k_old * Ku[i] + (w_ * r_new[i] + w_previous_ * r_old[i]));
     for (int i = n_c; i < n_f; ++i) update(i, k_next * Ku_next[i] - k_old * Ku[i]);
   }
-  s.Ma_f.swap(Ma_next_);  // Ma_next_ is rewritten whole by the next step
   s.u.swap(u_work_);  // u_work_ keeps u(n): u_previous()
   r_previous_.swap(s.r);
   s.r = r_next;

@@ -25,6 +25,7 @@
 // bitwise equal to the sparse product; any other K (StencilProduct refuses it) keeps the sparse product.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <limits>
 #include <memory>
 
 #include "fem/stencil_product.hpp"
@@ -106,8 +107,10 @@ class HHTStepper {
   /// rhs += a' C^T r(n), the last of the right-hand side.
   void add_previous_contact_forces(const Eigen::VectorXd& r);
   bool predicted_ = false;  ///< the last correct() did the predict() of the step that follows
+  /// The rows of K_fd that have entries (K_fd u_d is zero elsewhere).
+  int coupled_rows_begin_ = std::numeric_limits<int>::max(), coupled_rows_end_ = 0;
   Eigen::VectorXd u_free_contact_, contact_load_;
-  Eigen::VectorXd u_d_next_, K_fd_u_d_, u_tilde_, Mu_tilde_, rhs_, u_free_, u_work_, Ku_next_, Ma_next_, r_previous_;
+  Eigen::VectorXd u_d_next_, K_fd_u_d_, rhs_, u_free_, u_work_, Ku_next_, r_previous_;
 };
 
 }  // namespace slidewave
