@@ -80,6 +80,45 @@ void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const
 // predictor u~ = u + dt v + c a and its mass product M u~ are not stored: the correction recomputes them
 // from the state, which has not changed since the predictor (the same operations, the same bits).
 
+namespace {
+
+/// The coefficients of the mass-product update of correct().
+struct MassCoefficients {
+  double k_next, a, w, w_previous, dt, g, g_old, b, c, mass;  ///< k_next = -(1-a), b = beta dt^2
+};
+
+/// n rows of the mass-product update (formulas in correct()); kForces: the contact rows, which carry
+/// w r(n+1) + a' r(n); kPredict: also the next step's right-hand side. Restrict parameters and a plain loop,
+/// so that the compiler vectorizes it (the same operations per entry, so the same bits).
+template <bool kForces, bool kPredict>
+void update_mass_rows(const double* __restrict Ku_next, const double* __restrict Ku, const double* __restrict r_new,
+                      const double* __restrict r_old, const double* __restrict Kd, double* __restrict Ma,
+                      double* __restrict Mv, double* __restrict Mu, double* __restrict rhs, long n,
+                      const MassCoefficients& coefficients) {
+  const MassCoefficients k = coefficients;
+  for (long i = 0; i < n; ++i) {
+    double Ma_i = k.k_next * Ku_next[i] - k.a * Ku[i];
+    if constexpr (kForces) Ma_i = Ma_i + (k.w * r_new[i] + k.w_previous * r_old[i]);
+    const double Mu_tilde = Mu[i] + k.dt * Mv[i] + k.c * Ma[i];
+    Mv[i] += k.dt * (k.g_old * Ma[i] + k.g * Ma_i);
+    Ma[i] = Ma_i;
+    Mu[i] = Mu_tilde + k.b * Ma_i;
+    if constexpr (kPredict) rhs[i] = k.mass * (Mu[i] + k.dt * Mv[i] + k.c * Ma_i) - Kd[i] - k.a * Ku_next[i];
+  }
+}
+
+/// Rows [begin, end) of the vectors of correct() through update_mass_rows.
+template <bool kForces, bool kPredict>
+void update_mass_rows_between(int begin, int end, const double* Ku_next, const double* Ku, const double* r_new,
+                              const double* r_old, const double* Kd, double* Ma, double* Mv, double* Mu, double* rhs,
+                              const MassCoefficients& k) {
+  update_mass_rows<kForces, kPredict>(Ku_next + begin, Ku + begin, kForces ? r_new + begin : nullptr,
+                                      kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin,
+                                      Mu + begin, rhs + begin, end - begin, k);
+}
+
+}  // namespace
+
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   if (predicted_ && u_d_next == u_d_next_) {  // done by the last correct(), from this state and this u_d
     predicted_ = false;
@@ -153,25 +192,19 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen
   // mass products instead of two.
   const bool predict_following = u_d_following != nullptr;
   if (predict_following) prescribe(*u_d_following);
-  {
-    // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
-    // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
-    // [and the next step's rhs from M u~ = M u + dt M v + c M a at n+1]
-    const double k_next = -(1 - a), k_old = a, b = hht_.beta * dt * dt;
-    const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *r_new = r_next.data(), *r_old = s.r.data(),
-                 *Kd = K_fd_u_d_.data();
-    double *__restrict Ma = s.Ma_f.data(), *__restrict Mv = s.Mv_f.data(), *__restrict Mu = s.Mu_f.data(),
-                       *__restrict rhs = rhs_.data();
-    const auto update = [&](int i, double Ma_i) {
-      const double Mu_tilde = Mu[i] + dt * Mv[i] + c * Ma[i];
-      Mv[i] += dt * (g_old * Ma[i] + g * Ma_i);
-      Ma[i] = Ma_i;
-      Mu[i] = Mu_tilde + b * Ma_i;
-      if (predict_following) rhs[i] = mass * (Mu[i] + dt * Mv[i] + c * Ma_i) - Kd[i] - a * Ku_next[i];
-    };
-    for (int i = 0; i < n_c; ++i)  // the contact rows carry the forces
-      update(i, k_next * Ku_next[i] - k_old * Ku[i] + (w_ * r_new[i] + w_previous_ * r_old[i]));
-    for (int i = n_c; i < n_f; ++i) update(i, k_next * Ku_next[i] - k_old * Ku[i]);
+  // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
+  // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
+  // [and the next step's rhs from M u~ = M u + dt M v + c M a at n+1]
+  const MassCoefficients k{-(1 - a), a, w_, w_previous_, dt, g, g_old, hht_.beta * dt * dt, c, mass};
+  const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *r_new = r_next.data(), *r_old = s.r.data(),
+               *Kd = K_fd_u_d_.data();
+  double *Ma = s.Ma_f.data(), *Mv = s.Mv_f.data(), *Mu = s.Mu_f.data(), *rhs = rhs_.data();
+  if (predict_following) {  // the contact rows [0, n_c) carry the forces
+    update_mass_rows_between<true, true>(0, n_c, Ku_next, Ku, r_new, r_old, Kd, Ma, Mv, Mu, rhs, k);
+    update_mass_rows_between<false, true>(n_c, n_f, Ku_next, Ku, r_new, r_old, Kd, Ma, Mv, Mu, rhs, k);
+  } else {
+    update_mass_rows_between<true, false>(0, n_c, Ku_next, Ku, r_new, r_old, Kd, Ma, Mv, Mu, rhs, k);
+    update_mass_rows_between<false, false>(n_c, n_f, Ku_next, Ku, r_new, r_old, Kd, Ma, Mv, Mu, rhs, k);
   }
   s.u.swap(u_work_);  // u_work_ keeps u(n): u_previous()
   r_previous_.swap(s.r);
