@@ -63,9 +63,9 @@ def main(argv=None) -> int:
 
     changed = [c for c in sorted(default) if default[c]["category"] != fast[c]["category"]]
     same_category = len(default) - len(changed)
-    changes = [abs(number(fast[c]["celerity"]) - number(default[c]["celerity"])) / abs(number(default[c]["celerity"]))
-               for c in default if number(default[c]["celerity"]) not in (0.0,) and not math.isnan(number(default[c]["celerity"]))]
-    changes = [x for x in changes if not math.isnan(x)]
+    celerities = [(number(default[c]["celerity"]), number(fast[c]["celerity"])) for c in default]
+    changes = [abs(c_fast - c_default) / abs(c_default) for c_default, c_fast in celerities
+               if c_default and not math.isnan(c_default) and not math.isnan(c_fast)]
     print()
     print(f"published cells compared: {len(ratios)}; |fast - default| / seed std: median {statistics.median(ratios):.3f}, "
           f"max {max(ratios):.3f}; cells above 1: {sum(r > 1 for r in ratios)}")

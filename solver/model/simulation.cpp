@@ -107,6 +107,11 @@ void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
   }
 }
 
+/// Every node sticks.
+bool all_stuck(const std::vector<ContactState>& state) {
+  return std::all_of(state.begin(), state.end(), [](ContactState s) { return s == ContactState::stick; });
+}
+
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
 /// With contact.all_stick = exact, a step that follows an all-stick step first tries the exact all-stick
@@ -121,9 +126,7 @@ struct ContactStep {
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
-    const bool all_stuck = std::all_of(loop.contact.begin(), loop.contact.end(),
-                                       [](ContactState s) { return s == ContactState::stick; });
-    if (all_stick && all_stuck && all_stick->solve(q, f, bounds, r_next, loop.contact))
+    if (all_stick && all_stuck(loop.contact) && all_stick->solve(q, f, bounds, r_next, loop.contact))
       return GaussSeidelReport{0, 0.0, true};
     return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, nullptr, loop.contact, &W_columns);
   }
@@ -176,11 +179,16 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   ProgressPacer pacer(progress);
   const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
   std::string failure;  // why the run stopped early, if it did
+  // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
+  const auto top_after = [&](std::int64_t step) {
+    return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
+  };
+  Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
   while (loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
     if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
     const double t = (loop.step + 1) * hht.dt;
-    // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_x(preload) + V0 t.
-    stepper.predict(s, m.top_displacement(pre.u_x_top + m.d.V0 * t, c.loading.Uy_over_H * m.d.H));
+    // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
+    stepper.predict(s, u_d_next);
     watch.lap(&StepProfile::predictor);
     const Eigen::VectorXd& u_free = stepper.solve_free();
     watch.lap(&StepProfile::free_solve);
@@ -189,9 +197,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     if (!report.converged) { failure = "contact_not_converged"; break; }
     watch.lap(&StepProfile::contact);
     // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
-    const Eigen::VectorXd u_d_following =
-        m.top_displacement(pre.u_x_top + m.d.V0 * ((loop.step + 2) * hht.dt), c.loading.Uy_over_H * m.d.H);
+    u_d_following = top_after(loop.step + 2);
     stepper.correct(contact.r_next, s, &u_d_following);
+    u_d_next.swap(u_d_following);
     watch.lap(&StepProfile::correction);
     // 4d. Energy ledger, friction memory, output rows, first opening.
     ++loop.step;

@@ -45,6 +45,18 @@ Eigen::VectorXd sticking_reactions(int n, std::mt19937_64& generator) {
   return r;
 }
 
+/// Gauss–Seidel from zero to 1e-13 (an independent method): its reactions and states.
+struct Sweeps {
+  Eigen::VectorXd r;
+  std::vector<ContactState> state;
+};
+Sweeps gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q) {
+  Sweeps out{Eigen::VectorXd::Zero(q.size()), {}};
+  const auto report = solve_contact_gauss_seidel(W, q, kF, {}, {1e-13, 100000, 1.0}, out.r, nullptr, out.state);
+  EXPECT_TRUE(report.converged);
+  return out;
+}
+
 TEST(AllStick, ReturnsTheReactionsOfAStickingInterface) {
   const Eigen::MatrixXd W = layer_delassus();
   const int n = static_cast<int>(W.rows() / 2);
@@ -59,12 +71,8 @@ TEST(AllStick, ReturnsTheReactionsOfAStickingInterface) {
     ASSERT_TRUE(all_stick.solve(q, kF, {}, r, state)) << "trial " << trial;
     EXPECT_LE((r - r_made).cwiseAbs().maxCoeff(), 1e-12 * r_made.cwiseAbs().maxCoeff()) << "trial " << trial;
     for (ContactState s : state) EXPECT_EQ(s, ContactState::stick);
-    // Gauss–Seidel, an independent method, reaches the same reactions to its tolerance.
-    Eigen::VectorXd r_sweeps = Eigen::VectorXd::Zero(2 * n);
-    std::vector<ContactState> state_sweeps;
-    const auto report = solve_contact_gauss_seidel(W, q, kF, {}, {1e-13, 100000, 1.0}, r_sweeps, nullptr, state_sweeps);
-    ASSERT_TRUE(report.converged);
-    EXPECT_LE((r - r_sweeps).cwiseAbs().maxCoeff(), 1e-9) << "trial " << trial;
+    // Gauss–Seidel reaches the same reactions to its tolerance.
+    EXPECT_LE((r - gauss_seidel(W, q).r).cwiseAbs().maxCoeff(), 1e-9) << "trial " << trial;
   }
 }
 
@@ -86,9 +94,7 @@ TEST(AllStick, RefusesWhenOneNodeWouldSlipOrOpen) {
     EXPECT_EQ(r, Eigen::VectorXd::Constant(2 * n, 3.0));
     for (ContactState s : state) EXPECT_EQ(s, ContactState::slip);
     // Not all-stick indeed: Gauss–Seidel finds a node that does not stick.
-    Eigen::VectorXd r_sweeps = Eigen::VectorXd::Zero(2 * n);
-    std::vector<ContactState> state_sweeps;
-    ASSERT_TRUE(solve_contact_gauss_seidel(W, q, kF, {}, {1e-13, 100000, 1.0}, r_sweeps, nullptr, state_sweeps).converged);
+    const std::vector<ContactState> state_sweeps = gauss_seidel(W, q).state;
     EXPECT_NE(std::count(state_sweeps.begin(), state_sweeps.end(), ContactState::stick), n);
   }
 }
@@ -112,7 +118,7 @@ TEST(AllStick, GivenBoundsReplaceFTimesPressure) {
 }
 
 // A whole run (H/16, nu = 0.2, f = 1.5, through slip onset to 50 s after the first opening): the stick steps take no sweep,
-// and until the first slip the global series agree with the sweeps' to far below the seed perturbation.
+// and until the first slip T/N agrees with the sweeps' to a few contact tolerances.
 TEST(AllStick, RunMatchesTheSweepsBeforeSlipOnset) {
   const nlohmann::json base = {{"mesh", {{"elements_per_H", 16}}},
                                {"time", {{"t_end", 3000.0}, {"stop_after_opening", 50.0}}},
@@ -136,17 +142,22 @@ TEST(AllStick, RunMatchesTheSweepsBeforeSlipOnset) {
   const int stride = config_sweeps.output.interface_stride;
   const size_t stick_steps = static_cast<size_t>((first_slip_row - 1) * stride);
   long long sweeps_total = 0, exact_total = 0;
+  double max_T_over_N_difference = 0;
   for (size_t i = 1; i < std::min(sweeps.global.t.size(), fast.global.t.size()); ++i) {
     sweeps_total += sweeps.global.contact_iterations[i];
     exact_total += fast.global.contact_iterations[i];
     if (i <= stick_steps) {
       EXPECT_EQ(fast.global.contact_iterations[i], 0) << "step " << i;
-      EXPECT_NEAR(fast.global.T_over_N[i], sweeps.global.T_over_N[i], 1e-8) << "step " << i;
+      // The sweeps stop within contact.tolerance = 1e-10 (of p0 h per node) of the exact r: T/N moves by a
+      // few of that (1.6e-10 measured).
+      EXPECT_NEAR(fast.global.T_over_N[i], sweeps.global.T_over_N[i], 1e-9) << "step " << i;
+      max_T_over_N_difference = std::max(max_T_over_N_difference, std::fabs(fast.global.T_over_N[i] - sweeps.global.T_over_N[i]));
     }
   }
   EXPECT_LT(exact_total, sweeps_total / 2);
   RecordProperty("sweeps", std::to_string(sweeps_total));
   RecordProperty("sweeps_exact_all_stick", std::to_string(exact_total));
+  RecordProperty("max_T_over_N_difference_before_slip", testing::sci(max_T_over_N_difference));
   // The same onset; and the energy balance closes as exactly as with the sweeps: the residual is the HHT
   // dissipation booked term by term, to round-off of the energy that flowed (hht_dissipation_test).
   EXPECT_NEAR(fast.t_first_opening, sweeps.t_first_opening, 5 * config_sweeps.derived().dt);
