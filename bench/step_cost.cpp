@@ -5,12 +5,11 @@
 // On the spectral path the "free solve" is the forward half (FFT, sweeps, contact rows) and the
 // "correction" the loaded half plus the Newmark update.
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2 4 6] [--t-end 1300]
-//                                      [--nu 0.2] [--f 1.5] [--solver circulant|spectral|cholmod]
-//                                      [--threads N] [--all-stick iterate|exact]
-//                                      [--stream FOLDER [--checkpoint-interval S]]
-// --threads sets numerics.threads (the thread team of one circulant/spectral solve; CHOLMOD's BLAS is
-// left as the process starts). --all-stick sets contact.all_stick (contact/all_stick.hpp); sweeps/step is the
-// mean count of Gauss–Seidel sweeps per step (0 on a step solved by the exact all-stick solution).
+//                                      [--nu 0.2] [--f 1.5] [--solver spectral|cholmod]
+//                                      [--threads N] [--stream FOLDER [--checkpoint-interval S]]
+// --threads sets numerics.threads (the thread team of one spectral solve; CHOLMOD's BLAS is left as the
+// process starts). sweeps/step is the mean count of Gauss–Seidel sweeps per step (0 on a step solved by the
+// exact all-stick solution, contact/all_stick.hpp).
 // --stream writes the run as `slidewave run` does (RUN.partial.h5 streamed, checkpoints every S s of
 // wall time, RUN.h5 put in place; io/run_session.hpp) into FOLDER/bench_H<n>.h5, so that ms/step
 // includes the output; without it nothing is written (the rows stay in memory).
@@ -19,7 +18,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -101,12 +99,11 @@ int main(int argc, char** argv) {
   std::vector<int> resolutions;
   std::vector<double> lambdas;
   double t_end = 1300, nu = 0.2, f = 1.5;
-  auto solver = slidewave::LinearSolverKind::circulant;
-  std::string solver_name = "circulant";
+  auto solver = slidewave::LinearSolverKind::spectral;
+  std::string solver_name = "spectral";
   std::string stream_folder;
   double checkpoint_interval = 300;
   int threads = 1;
-  bool exact_all_stick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -123,26 +120,21 @@ int main(int argc, char** argv) {
       stream_folder = argv[++i];
     } else if (a == "--threads" && i + 1 < argc && std::atoi(argv[i + 1]) >= 1) {
       threads = std::atoi(argv[++i]);
-    } else if (a == "--all-stick" && i + 1 < argc &&
-               (std::strcmp(argv[i + 1], "iterate") == 0 || std::strcmp(argv[i + 1], "exact") == 0)) {
-      exact_all_stick = std::strcmp(argv[++i], "exact") == 0;
     } else if (a == "--checkpoint-interval" && i + 1 < argc) {
       checkpoint_interval = std::atof(argv[++i]);
-    } else if (a == "--solver" && i + 1 < argc && (solver_name = argv[++i], solver_name == "circulant" ||
-                                                   solver_name == "spectral" || solver_name == "cholmod")) {
-      solver = solver_name == "cholmod"    ? slidewave::LinearSolverKind::cholmod
-               : solver_name == "spectral" ? slidewave::LinearSolverKind::spectral
-                                           : slidewave::LinearSolverKind::circulant;
+    } else if (a == "--solver" && i + 1 < argc &&
+               (solver_name = argv[++i], solver_name == "spectral" || solver_name == "cholmod")) {
+      solver = solver_name == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::spectral;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver circulant|spectral|cholmod] [--threads N] [--all-stick iterate|exact] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
   if (lambdas.empty()) lambdas = {2};
 
-  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, all-stick %s, output %s\n", nu, f,
-              t_end, solver_name.c_str(), threads, threads == 1 ? "" : "s", exact_all_stick ? "exact" : "iterate",
+  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, output %s\n", nu, f,
+              t_end, solver_name.c_str(), threads, threads == 1 ? "" : "s",
               stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
                                                              std::to_string(checkpoint_interval) + " s").c_str());
   std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s\n", "H/h", "lam/H", "n_dofs",
@@ -158,7 +150,6 @@ int main(int argc, char** argv) {
     config.time.t_end = t_end;
     config.numerics.linear_solver = solver;
     config.numerics.threads = threads;
-    config.contact.exact_all_stick = exact_all_stick;
     const slidewave::LayerModel model(config);
     config.output.checkpoint_interval = checkpoint_interval;
     slidewave::StepProfile profile;

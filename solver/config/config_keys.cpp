@@ -23,7 +23,7 @@ constexpr std::nullopt_t unbounded = std::nullopt;
 template <typename Field>
 ConfigKey number(std::string group, std::string name, std::optional<Bound> lower, std::optional<Bound> upper,
                  std::string unit, std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::number, lower, upper, {}, unit, description, {}, {}};
+  ConfigKey k{group, name, KeyKind::number, lower, upper, {}, {}, unit, description, {}, {}};
   k.get = [field](const RunConfig& c) { return json(field(c)); };
   k.set = [field](RunConfig& c, const json& v) { field(c) = v.get<double>(); };
   return k;
@@ -32,7 +32,7 @@ ConfigKey number(std::string group, std::string name, std::optional<Bound> lower
 template <typename Field>
 ConfigKey optional_number(std::string group, std::string name, std::optional<Bound> lower, std::string unit,
                           std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::optional_number, lower, unbounded, {}, unit, description, {}, {}};
+  ConfigKey k{group, name, KeyKind::optional_number, lower, unbounded, {}, {}, unit, description, {}, {}};
   k.get = [field](const RunConfig& c) { return field(c) ? json(*field(c)) : json(nullptr); };
   k.set = [field](RunConfig& c, const json& v) {
     if (v.is_null())
@@ -46,7 +46,7 @@ ConfigKey optional_number(std::string group, std::string name, std::optional<Bou
 template <typename Field>
 ConfigKey integer(std::string group, std::string name, long long lower, std::optional<long long> upper,
                   std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::integer, closed(static_cast<double>(lower)), unbounded, {}, "", description,
+  ConfigKey k{group, name, KeyKind::integer, closed(static_cast<double>(lower)), unbounded, {}, {}, "", description,
               {}, {}};
   if (upper) k.upper = closed(static_cast<double>(*upper));
   k.get = [field](const RunConfig& c) { return json(field(c)); };
@@ -63,8 +63,9 @@ using MemberOf = std::decay_t<decltype(std::declval<Field>()(std::declval<RunCon
 
 template <typename Field>
 ConfigKey choice(std::string group, std::string name, std::vector<std::pair<std::string, MemberOf<Field>>> options,
-                 std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::choice, unbounded, unbounded, {}, "", description, {}, {}};
+                 std::string description, Field field,
+                 std::vector<std::pair<std::string, std::string>> retired = {}) {
+  ConfigKey k{group, name, KeyKind::choice, unbounded, unbounded, {}, std::move(retired), "", description, {}, {}};
   for (const auto& option : options) k.choices.push_back(option.first);
   k.get = [field, options](const RunConfig& c) {
     for (const auto& [text, value] : options)
@@ -81,7 +82,7 @@ ConfigKey choice(std::string group, std::string name, std::vector<std::pair<std:
 template <typename Field>
 ConfigKey number_list(std::string group, std::string name, std::optional<Bound> lower, std::string unit,
                       std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::number_list, lower, unbounded, {}, unit, description, {}, {}};
+  ConfigKey k{group, name, KeyKind::number_list, lower, unbounded, {}, {}, unit, description, {}, {}};
   k.get = [field](const RunConfig& c) { return json(field(c)); };
   k.set = [field](RunConfig& c, const json& v) { field(c) = v.get<std::vector<double>>(); };
   return k;
@@ -168,12 +169,13 @@ std::vector<ConfigKey> make_table() {
               "is followed by one under-relaxed pass (omega 0.5) of as many sweeps, after which the step is "
               "an error (solver/contact/gauss_seidel.hpp)",
               [](auto& c) -> auto& { return c.contact.max_iterations; }),
-      choice("contact", "all_stick", {{"iterate", false}, {"exact", true}},
-             "`iterate`: every step's contact problem is solved by Gauss–Seidel sweeps; `exact`: after a step "
-             "whose nodes all stuck, first the exact all-stick solution r = -W^-1 q (one product), kept when "
-             "every node is closed and inside its friction bound, else the same sweeps. Sweeps and `exact` "
-             "differ within contact.tolerance, which this chaotic problem amplifies after slip onset",
-             [](auto& c) -> auto& { return c.contact.exact_all_stick; }),
+      choice("contact", "all_stick", {{"exact", AllStick::exact}},
+             "how a step whose nodes all stuck before is solved: first the exact all-stick solution "
+             "r = -W^-1 q (one product), kept when every node is closed and inside its friction bound, else "
+             "Gauss–Seidel sweeps. The one way; the key stays so that configs naming it keep working",
+             [](auto& c) -> auto& { return c.contact.all_stick; },
+             {{"iterate", "Gauss–Seidel sweeps on every step are retired; the solver always tries the exact "
+                          "all-stick solution first (use \"exact\" or leave the key out)"}}),
 
       number("perturbation", "amplitude", closed(0), unbounded, "",
              "random initial displacement of the free nodes, relative to the preshear top displacement",
@@ -182,17 +184,17 @@ std::vector<ConfigKey> make_table() {
               [](auto& c) -> auto& { return c.perturbation.seed; }),
 
       choice("numerics", "linear_solver",
-             {{"circulant", LinearSolverKind::circulant},
-              {"cholmod", LinearSolverKind::cholmod},
-              {"spectral", LinearSolverKind::spectral}},
-             "`circulant` (FFT in x, exact for this uniform periodic mesh), `cholmod` (general sparse "
-             "Cholesky, the oracle) or `spectral` (circulant with the free solve and the correction sharing "
-             "one spectrum: one K_eff pass per step); all give the same discrete solution to round-off, which "
-             "this chaotic problem amplifies after slip onset",
-             [](auto& c) -> auto& { return c.numerics.linear_solver; }),
+             {{"spectral", LinearSolverKind::spectral}, {"cholmod", LinearSolverKind::cholmod}},
+             "`spectral` (FFT in x, exact for this uniform periodic mesh: the free solve and the correction "
+             "share one spectrum, one K_eff pass per step) or `cholmod` (general sparse Cholesky, two solves "
+             "per step: the oracle); both give the same discrete solution to round-off, which this chaotic "
+             "problem amplifies after slip onset",
+             [](auto& c) -> auto& { return c.numerics.linear_solver; },
+             {{"circulant", "the two-solve FFT path is retired; `spectral` solves the same equations with one "
+                            "K_eff pass per step (use \"spectral\" or leave the key out)"}}),
       integer("numerics", "threads", 1, 256,
               "threads of one run: the OpenMP team that shares out the FFT rows and wavenumbers of the "
-              "`circulant` and `spectral` solves (results bitwise the same for any count), or the BLAS/OpenMP "
+              "`spectral` solves (results bitwise the same for any count), or the BLAS/OpenMP "
               "threads under CHOLMOD; `slidewave run --threads N` overrides it, and the resolved configuration "
               "in run.h5 records the count used. Needs a free core per thread: on a busy machine more threads are "
               "slower (set OMP_WAIT_POLICY=PASSIVE there)",
@@ -301,9 +303,12 @@ std::string ConfigKey::problem(const json& v) const {
       if (!is_integral(v)) return head + " is not an integer" + tail;
       return within(*this, v.get<double>()) ? "" : head + " out of range" + tail;
     case KeyKind::choice:
-      if (v.is_string())
+      if (v.is_string()) {
         for (const auto& c : choices)
           if (c == v.get<std::string>()) return "";
+        for (const auto& [value, instead] : retired)
+          if (value == v.get<std::string>()) return head + " is retired: " + instead + tail;
+      }
       return head + " invalid" + tail;
     case KeyKind::number_list: {
       bool ok = v.is_array();

@@ -35,6 +35,8 @@ struct ConfigKey {
   KeyKind kind;
   std::optional<Bound> lower, upper;  ///< absent: unbounded on that side
   std::vector<std::string> choices;   ///< the allowed strings of a `choice`, in the documented order
+  /// Values a `choice` once allowed, each with what the solver does instead (refused with that message).
+  std::vector<std::pair<std::string, std::string>> retired;
   std::string unit;                   ///< SI unit, empty for a dimensionless key
   std::string description;            ///< one paragraph of Markdown
   std::function<nlohmann::json(const RunConfig&)> get;

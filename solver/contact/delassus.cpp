@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cstring>
 
-// Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX-512F has FMA), which
-// rounds once where Eigen's kernels round twice. The clones then differ from the baseline code only in
-// vector width, which leaves every entry's operations and their order unchanged.
+// Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX2 and AVX-512F machines have
+// FMA), which rounds once where the baseline code rounds twice. The clones then differ from the baseline
+// code only in vector width, which leaves every entry's operations and their order unchanged: a run gives
+// the same bits on every x86-64 CPU.
 #define SLIDEWAVE_MULTIVERSIONED \
   __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
 
@@ -60,10 +61,9 @@ void add_two_columns(const double* __restrict c0, const double* __restrict c1, d
 /// unaligned by memcpy; its + and * are per lane, the same IEEE operations as on scalars.
 typedef double Lanes8 __attribute__((vector_size(64)));
 
-/// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0
-/// in column order, i < n (one column block of Eigen's general_matrix_vector_product, ColMajor). Written over explicit vectors
-/// of 32 rows, whose partial sums stay in registers: left to itself, GCC vectorizes across the columns
-/// (gathers) instead.
+/// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0 in column order, i < n. Written
+/// over explicit vectors of 32 rows, whose partial sums stay in registers: left to itself, GCC vectorizes
+/// across the columns (gathers) instead.
 SLIDEWAVE_MULTIVERSIONED
 void add_column_block(const double* const* __restrict column, const double* __restrict coefficient, int n_columns,
                       double* __restrict out, Eigen::Index n) {
@@ -109,12 +109,11 @@ void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen:
                        Eigen::VectorXd& y) {
   const Eigen::Index n_c = 2 * n_nodes;
   y = q;
-  // Eigen 3.4's column blocking of the matrix-vector product (GeneralMatrixVector.h): the whole matrix
-  // below 128 columns, else 16 columns while a column is under 32000 bytes, else 4.
-  const int block = n_c < 128 ? static_cast<int>(n_c) : (n_c * static_cast<Eigen::Index>(sizeof(double)) < 32000 ? 16 : 4);
-  const double* column[128];
-  for (Eigen::Index j0 = 0; j0 < n_c; j0 += block) {
-    const int n_block = static_cast<int>(std::min<Eigen::Index>(block, n_c - j0));
+  // Blocks of 16 columns: their partial sums stay in registers over a 32-row stripe of y.
+  constexpr int kBlock = 16;
+  const double* column[kBlock];
+  for (Eigen::Index j0 = 0; j0 < n_c; j0 += kBlock) {
+    const int n_block = static_cast<int>(std::min<Eigen::Index>(kBlock, n_c - j0));
     for (int j = 0; j < n_block; ++j) {
       const Eigen::Index col = j0 + j;
       column[j] = columns.data() + (col % 2) * columns.rows() + column_start(n_nodes, static_cast<int>(col / 2));

@@ -32,11 +32,9 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 // matrix C with W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n)) instead of the dense 2n x 2n W:
 // C fits in the cache where W does not.
 //
-// Both give the result of the Eigen expression they replace bit for bit (tested): every entry gets the
-// same products and sums in the same order, only the memory they are read from and the vector width
-// differ. The loops are compiled for AVX2 and AVX-512 next to the baseline ISA (GCC function
-// multiversioning, chosen at load time) with floating-point contraction off, so no fused multiply-add
-// changes a rounding whatever the build host: the results do not depend on the ISA that runs them.
+// The loops are compiled for AVX2 and AVX-512 next to the baseline ISA (GCC function multiversioning,
+// chosen at load time) with floating-point contraction off, so no fused multiply-add changes a rounding:
+// the results do not depend on the ISA that runs them (tested against the dense product to round-off).
 
 /// y += W(:, 2k..2k+1) (d0, d1), as Eigen's y += W.middleCols<2>(2k) * Vector2d(d0, d1):
 /// y_i += C(s + i, 0) d0 + C(s + i, 1) d1 with s = 2 ((n - k) mod n).
@@ -44,8 +42,7 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
                                Eigen::VectorXd& y);
 
-/// y = q + W r, as Eigen evaluates that expression (y = q, then its column-major matrix-vector kernel:
-/// per block of columns, a sum over the block in column order, added to y).
+/// y = q + W r (y = q, then per block of 16 columns a sum over the block in column order, added to y).
 void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q,
                        const Eigen::VectorXd& r, Eigen::VectorXd& y);
 

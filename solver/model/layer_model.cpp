@@ -9,6 +9,7 @@
 #include "fem/assembly.hpp"
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "linalg/two_solve_split.hpp"
 
 namespace slidewave {
 
@@ -28,9 +29,13 @@ LayerModel::LayerModel(const RunConfig& c)
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {
-  if (config.numerics.linear_solver != LinearSolverKind::cholmod)  // circulant, spectral
+  return factorize_split(A);
+}
+
+std::unique_ptr<SplitSolver> LayerModel::factorize_split(const Eigen::SparseMatrix<double>& A) const {
+  if (config.numerics.linear_solver == LinearSolverKind::spectral)
     return std::make_unique<BlockCirculantSolver>(A, mesh.n_x, mesh.n_y, config.numerics.threads);
-  return std::make_unique<SparseCholesky>(A);
+  return std::make_unique<TwoSolveSplit>(std::make_unique<SparseCholesky>(A), n_contact_dofs);
 }
 
 Eigen::VectorXd LayerModel::top_displacement(double u_x, double u_y) const {

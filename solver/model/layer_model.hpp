@@ -9,6 +9,7 @@
 #include "config/run_config.hpp"
 #include "contact/coulomb_local.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/split_solver.hpp"
 #include "mesh/layer_mesh.hpp"
 
 namespace slidewave {
@@ -29,6 +30,8 @@ struct LayerModel {
 
   /// Factorizes a free-free matrix (K_ff, M_ff, K_eff) with the configured linear solver.
   std::unique_ptr<LinearSolver> factorize(const Eigen::SparseMatrix<double>& A) const;
+  /// The same as a split solver whose loaded DOFs are the contact DOFs (what the HHT step needs).
+  std::unique_ptr<SplitSolver> factorize_split(const Eigen::SparseMatrix<double>& A) const;
 
   /// Top DOF values for shear u_x and compression u_y.
   Eigen::VectorXd top_displacement(double u_x, double u_y) const;

@@ -114,25 +114,23 @@ bool all_stuck(const std::vector<ContactState>& state) {
 
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
-/// With contact.all_stick = exact, a step that follows an all-stick step first tries the exact all-stick
-/// solution (contact/all_stick.hpp; reported as 0 sweeps), and Gauss–Seidel only if a node would not stick.
+/// A step that follows an all-stick step first tries the exact all-stick solution (contact/all_stick.hpp;
+/// reported as 0 sweeps), and Gauss–Seidel only if a node would not stick.
 struct ContactStep {
-  ContactStep(int n_c, const Eigen::MatrixXd& W, bool exact_all_stick) : q(n_c), r_next(n_c), du(n_c) {
-    if (exact_all_stick) all_stick = std::make_unique<AllStickSolution>(W);
-  }
+  ContactStep(int n_c, const Eigen::MatrixXd& W) : q(n_c), r_next(n_c), du(n_c), all_stick(W) {}
   GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::MatrixXd& W_columns, const Eigen::VectorXd& u_free,
                           double f, const FrictionLaw& law, const GaussSeidelSettings& settings, LoopState& loop) {
     q = u_free.head(q.size());
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
-    if (all_stick && all_stuck(loop.contact) && all_stick->solve(q, f, bounds, r_next, loop.contact))
+    if (all_stuck(loop.contact) && all_stick.solve(q, f, bounds, r_next, loop.contact))
       return GaussSeidelReport{0, 0.0, true};
     return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, nullptr, loop.contact, &W_columns);
   }
   Eigen::VectorXd q, r_next, du;  ///< du: contact displacement increment of the step
   std::vector<double> bounds;
-  std::unique_ptr<AllStickSolution> all_stick;  ///< null unless contact.all_stick = exact
+  AllStickSolution all_stick;
 };
 
 }  // namespace
@@ -150,8 +148,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const HHTCoefficients hht(c.time.hht_alpha, m.d.dt);
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
   HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
-                     m.factorize(effective_matrix(hht, system)),
-                     c.numerics.linear_solver == LinearSolverKind::spectral);
+                     m.factorize_split(effective_matrix(hht, system)));
   const Eigen::MatrixXd W = stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
   const Eigen::MatrixXd W_columns = delassus_periodic_columns(W);
   const auto friction = make_friction_law(c.friction);
@@ -175,7 +172,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   // 4. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
-  ContactStep contact(n_c, W, c.contact.exact_all_stick);
+  ContactStep contact(n_c, W);
   ProgressPacer pacer(progress);
   const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
   std::string failure;  // why the run stopped early, if it did

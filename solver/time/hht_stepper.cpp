@@ -11,19 +11,15 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const P
 }
 
 HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
-                       std::unique_ptr<LinearSolver> K_eff, bool one_pass)
+                       std::unique_ptr<SplitSolver> K_eff)
     : system_(system),
       hht_(hht),
       w_(alpha_weighted ? 1 - hht.alpha : 1.0),
       w_previous_(alpha_weighted ? hht.alpha : 0.0),
       K_eff_(std::move(K_eff)) {
-  if (one_pass) {
-    split_ = dynamic_cast<SplitSolver*>(K_eff_.get());
-    if (!split_ || split_->n_contact() != system.n_contact)
-      throw std::invalid_argument("HHTStepper: one pass per step needs a split solver (BlockCirculantSolver) whose " +
-                                  std::string("loaded DOFs are the ") + std::to_string(system.n_contact) +
-                                  " contact DOFs");
-  }
+  if (!K_eff_ || K_eff_->n_contact() != system.n_contact)
+    throw std::invalid_argument("HHTStepper: the split solver's loaded DOFs must be the " +
+                                std::to_string(system.n_contact) + " contact DOFs");
   try {
     if (system.n_contact % 2 == 0) K_stencil_ = std::make_unique<StencilProduct>(system.K, system.n_contact / 2);
   } catch (const std::invalid_argument&) {
@@ -33,7 +29,6 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
   u_free_contact_.resize(system.n_contact);
   contact_load_.resize(system.n_contact);
   rhs_.resize(n_f);
-  u_free_.resize(n_f);
   u_work_.resize(n);
   Ku_next_.resize(n);
   K_fd_u_d_ = Eigen::VectorXd::Zero(n_f);
@@ -152,25 +147,15 @@ void HHTStepper::add_previous_contact_forces(const Eigen::VectorXd& r) {
 }
 
 const Eigen::VectorXd& HHTStepper::solve_free() {
-  if (split_) {
-    split_->solve_free(rhs_, u_free_contact_);
-  } else {
-    K_eff_->solve_into(rhs_, u_free_);
-    u_free_contact_ = u_free_.head(system_.n_contact);
-  }
+  K_eff_->solve_free(rhs_, u_free_contact_);
   return u_free_contact_;
 }
 
 void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen::VectorXd* u_d_following) {
   const int n_f = system_.n_free, n_c = system_.n_contact, n_d = system_.n_prescribed;
   const double a = hht_.alpha, dt = hht_.dt;
-  if (split_) {
-    contact_load_.noalias() = w_ * r_next;
-    split_->solve_loaded(contact_load_, u_work_.head(n_f));
-  } else {
-    rhs_.head(n_c) += w_ * r_next;
-    K_eff_->solve_into(rhs_, u_work_.head(n_f));
-  }
+  contact_load_.noalias() = w_ * r_next;
+  K_eff_->solve_loaded(contact_load_, u_work_.head(n_f));
   u_work_.tail(n_d) = u_d_next_;
   const double g = hht_.gamma, g_old = 1 - hht_.gamma, mass = hht_.mass_factor();
   const double c = dt * dt * (0.5 - hht_.beta);

@@ -13,10 +13,10 @@
 // (C picks them), then the n_prescribed DOFs whose displacement u_d is imposed. The prescribed DOFs must
 // move at constant velocity (a = 0): the inertia coupling M_fd a_d is not in the equations.
 //
-// The two K_eff solves of a step can share one pass (one_pass = true, a SplitSolver such as
-// BlockCirculantSolver): the free solve keeps what the correction needs and yields only C u_free, and the
-// correction adds the response to w C^T r(n+1) to it (linalg/split_solver.hpp). Same discrete solution to
-// round-off, not bitwise: the default is the two solves.
+// The two K_eff solves of a step go through a SplitSolver (linalg/split_solver.hpp): the free solve keeps
+// what the correction needs and yields only C u_free, and the correction adds the response to w C^T r(n+1).
+// On the periodic layer that is BlockCirculantSolver's one pass per step; any other factorization goes
+// through TwoSolveSplit (two solves, the oracle).
 //
 // The mass products M_ff u, M_ff v, M_ff a of the free rows are carried through the step by the Newmark
 // relations and the equation of motion (M_ff a(n+1) follows from K u(n+1), K u(n) and the contact forces),
@@ -58,12 +58,11 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const P
 
 class HHTStepper {
  public:
-  /// @param K_eff  factorization of effective_matrix(hht, system)
+  /// @param K_eff  split factorization of effective_matrix(hht, system) whose n_contact() is system.n_contact
+  ///                (std::invalid_argument otherwise)
   /// @param alpha_weighted  true: contact forces weighted like external forces (w = 1-a, a' = a)
-  /// @param one_pass  the free solve and the correction share one pass: K_eff must be a SplitSolver whose
-  ///                  n_contact() is system.n_contact (std::invalid_argument otherwise)
   HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
-             std::unique_ptr<LinearSolver> K_eff, bool one_pass = false);
+             std::unique_ptr<SplitSolver> K_eff);
 
   /// State at rest in the equation of motion: K u, the mass products, and the consistent acceleration
   /// M_ff a_f = C^T r - (K u)_f (a = 0 on the prescribed DOFs).
@@ -97,8 +96,7 @@ class HHTStepper {
   PartitionedSystem system_;
   HHTCoefficients hht_;
   double w_, w_previous_;
-  std::unique_ptr<LinearSolver> K_eff_;
-  SplitSolver* split_ = nullptr;  ///< K_eff_ on the one-pass path, else null
+  std::unique_ptr<SplitSolver> K_eff_;
   std::unique_ptr<StencilProduct> K_stencil_;  ///< null when K is not a periodic stencil
   /// Ku = K u (u and Ku distinct).
   void multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const;
@@ -110,7 +108,7 @@ class HHTStepper {
   /// The rows of K_fd that have entries (K_fd u_d is zero elsewhere).
   int coupled_rows_begin_ = std::numeric_limits<int>::max(), coupled_rows_end_ = 0;
   Eigen::VectorXd u_free_contact_, contact_load_;
-  Eigen::VectorXd u_d_next_, K_fd_u_d_, rhs_, u_free_, u_work_, Ku_next_, r_previous_;
+  Eigen::VectorXd u_d_next_, K_fd_u_d_, rhs_, u_work_, Ku_next_, r_previous_;
 };
 
 }  // namespace slidewave

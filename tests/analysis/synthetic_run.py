@@ -107,7 +107,7 @@ def default_config(s: Scenario) -> dict:
                  "contact_weighting": "alpha", "stop_after_opening": None},
         "contact": {"tolerance": 1e-10, "max_iterations": 2000},
         "perturbation": {"amplitude": 1e-5, "seed": 1},
-        "numerics": {"linear_solver": "circulant"},
+        "numerics": {"linear_solver": "spectral"},
         "output": {"interface_stride": s.interface_stride, "snapshot_times": [], "progress": "never"},
     }
 

@@ -91,7 +91,7 @@ def test_threads_override_is_validated_and_recorded(solver, tmp_path):
     with h5py.File(tmp_path / "run.h5", "r") as f:
         resolved = json.loads(text(f.attrs["config"]))
     assert resolved["numerics"]["threads"] == 2
-    assert resolved["numerics"]["linear_solver"] == "circulant"
+    assert resolved["numerics"]["linear_solver"] == "spectral"
 
 
 def test_write_error_exits_4_naming_the_file_and_leaves_nothing(solver, tmp_path):
@@ -269,3 +269,17 @@ def test_interrupted_run_exits_3_and_leaves_the_complete_file_alone(solver, tmp_
     assert int(attributes["complete"]) == 0 and attributes["end_reason"] == "interrupted"
     assert files_in(tmp_path) == {"tiny.json", "config.json", "run.h5", "run.interface.xdmf", "run.partial.h5",
                                   "run.partial.interface.xdmf", "run.checkpoint.h5"}
+
+
+@pytest.mark.parametrize("group, key, value, instead", [
+    ("numerics", "linear_solver", "circulant", "spectral"),
+    ("contact", "all_stick", "iterate", "exact all-stick solution"),
+])
+def test_retired_choice_exits_2_saying_what_the_solver_does_instead(solver, tmp_path, group, key, value, instead):
+    """A config written for an older solver path is refused, not silently run on another path."""
+    config = write_config(tmp_path, {**TINY, group: {key: value}})
+    for command in (["check", config], ["run", config, "-o", tmp_path / "run.h5"]):
+        result = run(solver, *command)
+        assert result.returncode == 2, result.stderr
+        assert f"{group}.{key}" in result.stderr and "retired" in result.stderr and instead in result.stderr
+    assert files_in(tmp_path) == {"config.json"}

@@ -154,7 +154,7 @@ TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
 // numerics.linear_solver: both solvers give the same discrete run to round-off. Compared before the
 // slip onset (the stick phase is not chaotic; after onset round-off differences grow).
 TEST(BlockCirculantSolver, SameRunAsCholmodBeforeSlipOnset) {
-  testing::expect_same_run_before_slip_onset("circulant", "cholmod");
+  testing::expect_same_run_before_slip_onset("spectral", "cholmod");
 }
 
 }  // namespace

@@ -52,6 +52,7 @@ TEST(ConfigKeys, EveryDefaultIsAllowed) {
 // Each key writes the member it reads: set a non-default allowed value, read it back.
 TEST(ConfigKeys, SetAndGetAddressTheSameMember) {
   for (const auto& k : config_keys()) {
+    if (k.kind == KeyKind::choice && k.choices.size() == 1) continue;  // one allowed value: nothing else to set
     json value;
     switch (k.kind) {
       case KeyKind::choice: value = k.choices.back() == k.default_value() ? k.choices.front() : k.choices.back(); break;

@@ -18,6 +18,7 @@
 #include <functional>
 
 #include "linalg/block_circulant_solver.hpp"
+#include "linalg/two_solve_split.hpp"
 #include "time/hht_stepper.hpp"
 
 namespace slidewave {
@@ -62,8 +63,8 @@ class DenseSplitSolver : public SplitSolver {
   Eigen::VectorXd u_free_;
 };
 
-/// two_solves: any solver; one_pass: the dense split solver; one_pass_fft: BlockCirculantSolver's split
-/// solve (only for oscillator_array, whose K_eff is block-circulant).
+/// two_solves: any solver through TwoSolveSplit; one_pass: the dense split solver; one_pass_fft:
+/// BlockCirculantSolver's split solve (only for oscillator_array, whose K_eff is block-circulant).
 enum class Path { two_solves, one_pass, one_pass_fft };
 
 /// A system M a + K u = C^T r with its matrices owned, partitioned as PartitionedSystem wants.
@@ -86,12 +87,13 @@ struct OwnedSystem {
     if (path == Path::one_pass_fft)
       return HHTStepper(view(), hht, alpha_weighted,
                         std::make_unique<BlockCirculantSolver>(effective_matrix(hht, view()), array_columns,
-                                                               n_free / (2 * array_columns)),
-                        true);
+                                                               n_free / (2 * array_columns)));
     if (path == Path::one_pass)
       return HHTStepper(view(), hht, alpha_weighted,
-                        std::make_unique<DenseSplitSolver>(effective_matrix(hht, view()), n_contact), true);
-    return HHTStepper(view(), hht, alpha_weighted, std::make_unique<DenseSolver>(effective_matrix(hht, view())));
+                        std::make_unique<DenseSplitSolver>(effective_matrix(hht, view()), n_contact));
+    return HHTStepper(view(), hht, alpha_weighted,
+                      std::make_unique<TwoSolveSplit>(std::make_unique<DenseSolver>(effective_matrix(hht, view())),
+                                                      n_contact));
   }
 };
 

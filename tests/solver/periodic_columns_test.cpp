@@ -1,7 +1,7 @@
 // Products with a block-circulant W read from its generating columns (contact/delassus.hpp:
-// add_periodic_node_columns, periodic_residual) against the Eigen expressions they replace, bit for bit,
-// on random block-circulant W of sizes that take each of Eigen's column blockings (all columns below
-// 128, 16 below 4000 rows, 4 above) and odd tails of the vector loops.
+// add_periodic_node_columns, periodic_residual) against the dense Eigen expressions: the node update bit
+// for bit, the residual to round-off (its own summation order), on random block-circulant W of sizes that
+// cover a partial column block and odd tails of the vector loops.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -43,16 +43,19 @@ bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 const int kNodeCounts[] = {1, 2, 3, 5, 31, 63, 64, 65, 97, 384, 1001, 2001};
 
-TEST(PeriodicColumns, ResidualEqualsEigenBitForBit) {
+TEST(PeriodicColumns, ResidualEqualsTheDenseProductToRoundOff) {
   std::mt19937_64 generator(20261124);
   for (int n : kNodeCounts) {
     const Eigen::MatrixXd W = random_block_circulant(n, generator);
     const Eigen::MatrixXd columns = delassus_periodic_columns(W);
     const Eigen::VectorXd q = random_vector(2 * n, generator), r = random_vector(2 * n, generator);
     const Eigen::VectorXd expected = q + W * r;
+    // Each entry sums 2n products of numbers in [-1, 1]: its rounding error is below 2n eps of |W| |r|.
+    const Eigen::VectorXd bound = 4 * n * 1.2e-16 * (q.cwiseAbs() + W.cwiseAbs() * r.cwiseAbs());
     Eigen::VectorXd y;
     periodic_residual(columns, n, q, r, y);
-    EXPECT_TRUE(same_bits(y, expected)) << "n = " << n << ", max difference " << (y - expected).cwiseAbs().maxCoeff();
+    EXPECT_TRUE(((y - expected).cwiseAbs().array() <= bound.array()).all())
+        << "n = " << n << ", max difference " << (y - expected).cwiseAbs().maxCoeff();
   }
 }
 
@@ -69,18 +72,6 @@ TEST(PeriodicColumns, NodeUpdateEqualsEigenBitForBit) {
     }
     EXPECT_TRUE(same_bits(y, expected)) << "n = " << n << ", max difference " << (y - expected).cwiseAbs().maxCoeff();
   }
-}
-
-/// A product that rounds differently would show: the kernels are not exact in real arithmetic, so the
-/// bitwise checks above are meaningful only if a reordered sum does differ (guard of the oracle).
-TEST(PeriodicColumns, ReorderedSumDiffers) {
-  std::mt19937_64 generator(11);
-  const int n = 384;
-  const Eigen::MatrixXd W = random_block_circulant(n, generator);
-  const Eigen::VectorXd q = random_vector(2 * n, generator), r = random_vector(2 * n, generator);
-  Eigen::VectorXd reordered = q;
-  for (Eigen::Index j = 2 * n - 1; j >= 0; --j) reordered += W.col(j) * r(j);
-  EXPECT_FALSE(same_bits(reordered, Eigen::VectorXd(q + W * r)));
 }
 
 }  // namespace

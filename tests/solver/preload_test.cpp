@@ -26,7 +26,7 @@ struct PreloadErrors {
 /// integration and f.
 PreloadErrors preload_errors(double tolerance, int elements_per_H) {
   PreloadErrors e;
-  for (const char* linear_solver : {"circulant", "cholmod"})
+  for (const char* linear_solver : {"spectral", "cholmod"})
     for (double nu : {0.0, 0.2, 0.45, 0.49})
       for (Integration integration : testing::kAllIntegrations)
         for (double f : {0.5, 1.5}) {

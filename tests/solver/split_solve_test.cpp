@@ -1,6 +1,6 @@
 // One K_eff pass per step (numerics.linear_solver = "spectral"): BlockCirculantSolver's split solve
-// (linalg/split_solver.hpp) against two full solves and CHOLMOD on the layer's K_eff, the one-pass HHT step
-// against the two-solve step (circulant and CHOLMOD), and a short run against the default path.
+// (linalg/split_solver.hpp) against two full solves and CHOLMOD on the layer's K_eff, and the one-pass HHT
+// step against the two-solve step (TwoSolveSplit over the FFT solver and over CHOLMOD).
 // Oracles: K_eff^{-1} (b + C^T g) by CHOLMOD; the load g is scaled so that its response is a sizeable part
 // of u (a wrong G_m, a lost 1/n_x or a wrong weight w changes u far beyond the tolerance).
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "linalg/two_solve_split.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "same_run_support.hpp"
@@ -101,9 +102,9 @@ struct OneStep {
   /// Two steps (so that the carried r(n) and K u(n) enter too) with contact forces r_1, r_2.
   /// load_factor scales r_1, r_2 (1: the step under test; 0.9 stands for a wrong weight w).
   /// fused: each correct() also does the next step's predictor (HHTStepper::correct's u_d_following).
-  HHTState run(std::unique_ptr<LinearSolver> K_eff, bool one_pass, bool alpha_weighted, Eigen::VectorXd* u_free_1,
+  HHTState run(std::unique_ptr<SplitSolver> K_eff, bool alpha_weighted, Eigen::VectorXd* u_free_1,
                double load_factor = 1, bool fused = false) const {
-    HHTStepper stepper(system, hht, alpha_weighted, std::move(K_eff), one_pass);
+    HHTStepper stepper(system, hht, alpha_weighted, std::move(K_eff));
     Eigen::VectorXd v = Eigen::VectorXd::Zero(m.n_free + m.n_top);
     for (int i = 0; i < m.mesh.n_x; ++i) v(m.n_free + 2 * i) = m.d.V0;
     HHTState s = stepper.initial_state(pre.u, v, pre.r, SparseCholesky(m.M_ff));
@@ -132,12 +133,15 @@ TEST(SplitSolve, OneStepEqualsTheTwoSolveStep) {
     const std::string where = alpha_weighted ? "alpha weighting (w = 1 - a)" : "end weighting (w = 1)";
     Eigen::VectorXd free_two, free_one, free_cholmod;
     const auto circulant = [&] { return std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y); };
-    const HHTState two = step.run(circulant(), false, alpha_weighted, &free_two);
-    const HHTState one = step.run(circulant(), true, alpha_weighted, &free_one);
-    const HHTState cholmod = step.run(std::make_unique<SparseCholesky>(K_eff_of(m)), false, alpha_weighted, &free_cholmod);
+    const auto two_solves = [&](std::unique_ptr<LinearSolver> solver) {
+      return std::make_unique<TwoSolveSplit>(std::move(solver), m.n_contact_dofs);
+    };
+    const HHTState two = step.run(two_solves(circulant()), alpha_weighted, &free_two);
+    const HHTState one = step.run(circulant(), alpha_weighted, &free_one);
+    const HHTState cholmod = step.run(two_solves(std::make_unique<SparseCholesky>(K_eff_of(m))), alpha_weighted, &free_cholmod);
     // The test can fail: contact forces off by the 10 % of a wrong weight w (0.9 for 1) move u far beyond it.
     Eigen::VectorXd unused;
-    const HHTState off = step.run(circulant(), true, alpha_weighted, &unused, 0.9);
+    const HHTState off = step.run(circulant(), alpha_weighted, &unused, 0.9);
     EXPECT_GT(relative_difference(off.u, two.u), 1e-4) << where;
     for (const HHTState* reference : {&two, &cholmod}) {
       EXPECT_LE(relative_difference(free_one, free_two), 1e-12) << where;
@@ -157,10 +161,14 @@ TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
   const OneStep step(m);
   for (bool one_pass : {false, true})
     for (bool alpha_weighted : {true, false}) {
-      const auto circulant = [&] { return std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y); };
+      const auto solver = [&]() -> std::unique_ptr<SplitSolver> {
+        auto circulant = std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y);
+        if (one_pass) return circulant;
+        return std::make_unique<TwoSolveSplit>(std::move(circulant), m.n_contact_dofs);
+      };
       Eigen::VectorXd free_apart, free_fused;
-      const HHTState apart = step.run(circulant(), one_pass, alpha_weighted, &free_apart, 1, false);
-      const HHTState fused = step.run(circulant(), one_pass, alpha_weighted, &free_fused, 1, true);
+      const HHTState apart = step.run(solver(), alpha_weighted, &free_apart, 1, false);
+      const HHTState fused = step.run(solver(), alpha_weighted, &free_fused, 1, true);
       const std::string where = std::string(one_pass ? "one pass" : "two solves") + (alpha_weighted ? ", alpha" : ", end");
       EXPECT_EQ(fused.u, apart.u) << where;
       EXPECT_EQ(fused.v, apart.v) << where;
@@ -171,26 +179,21 @@ TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
       EXPECT_EQ(fused.Ma_f, apart.Ma_f) << where;
       // And the comparison can fail: a step with other forces differs.
       Eigen::VectorXd unused;
-      EXPECT_NE(step.run(circulant(), one_pass, alpha_weighted, &unused, 0.9, true).u, apart.u) << where;
+      EXPECT_NE(step.run(solver(), alpha_weighted, &unused, 0.9, true).u, apart.u) << where;
     }
 }
 
-TEST(SplitSolve, OnePassNeedsASplitSolverOnTheContactDofs) {
+TEST(SplitSolve, StepperNeedsASplitSolverOnTheContactDofs) {
   const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 4}}}}));
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, m.n_contact_dofs};
   const HHTCoefficients hht(0.1, m.d.dt);
-  EXPECT_THROW(HHTStepper(system, hht, true, std::make_unique<SparseCholesky>(K_eff_of(m)), true), std::invalid_argument);
+  EXPECT_THROW(HHTStepper(system, hht, true, nullptr), std::invalid_argument);
   PartitionedSystem wrong_contact = system;
   wrong_contact.n_contact = 2;
   EXPECT_THROW(HHTStepper(wrong_contact, hht, true,
-                          std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y), true),
+                          std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y)),
                std::invalid_argument);
-}
-
-// The run with "spectral" is the run with "circulant" to round-off before slip onset (the stick phase is not
-// chaotic; after it round-off differences grow), with the tolerances of the circulant/CHOLMOD comparison.
-TEST(SplitSolve, SameRunAsCirculantBeforeSlipOnset) {
-  testing::expect_same_run_before_slip_onset("spectral", "circulant");
+  EXPECT_THROW(TwoSolveSplit(std::make_unique<SparseCholesky>(K_eff_of(m)), -1), std::invalid_argument);
 }
 
 }  // namespace
