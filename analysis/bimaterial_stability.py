@@ -322,12 +322,25 @@ def _isolate(fun, box, n_roots: int, size_floor: float, features: np.ndarray,
     return roots
 
 
-def _search_box(upper: ElasticSolid, lower: ElasticSolid, f: float, radius: float | None):
+def _search_box(upper: ElasticSolid, lower: ElasticSolid, f: float, radius: float | None,
+                bottom: float = IM_FLOOR):
     """(x0, x1, y0, y1) in s = c / c_s1: half-width W = 4 (1 + |f|) max(c_l1, c_l2) / c_s1 + 4,
     beyond the asymptotic size |c| ~ |f| c_l of a root of (4); bottom at IM_FLOOR."""
     if radius is None:
         radius = 4.0 * (1.0 + abs(f)) * max(upper.c_l, lower.c_l) / upper.c_s + 4.0
-    return (-radius, radius, IM_FLOOR, radius)
+    return (-radius, radius, bottom, radius)
+
+
+def _count_in_search_box(fun, upper, lower, f, radius, features):
+    """(box, count) for the search rectangle; if a zero lies on its bottom edge (a root crossing
+    Im c = IM_FLOOR c_s1), the edge is moved by a factor of a few."""
+    for bottom in (IM_FLOOR, 3.7 * IM_FLOOR, 0.27 * IM_FLOOR):
+        box = _search_box(upper, lower, f, radius, bottom)
+        try:
+            return box, _winding_number(fun, *box, features)
+        except ArithmeticError:
+            continue
+    raise ArithmeticError("argument principle: zeros on every bottom edge tried")
 
 
 def _features(upper: ElasticSolid, lower: ElasticSolid) -> np.ndarray:
@@ -343,8 +356,8 @@ def count_growing_roots(upper, lower, f: float, radius: float | None = None) -> 
     """
     upper, lower = _as_solid(upper), _as_solid(lower)
     f = _check_f(f)
-    box = _search_box(upper, lower, f, radius)
-    return _winding_number(lambda s: _psi(s, upper, lower, f), *box, _features(upper, lower))
+    return _count_in_search_box(lambda s: _psi(s, upper, lower, f), upper, lower, f, radius,
+                                _features(upper, lower))[1]
 
 
 def growing_roots(upper, lower, f: float, radius: float | None = None) -> np.ndarray:
@@ -371,11 +384,10 @@ def growing_roots(upper, lower, f: float, radius: float | None = None) -> np.nda
     def fun(s):
         return _psi(s, upper, lower, f)
 
-    box = _search_box(upper, lower, f, radius)
     features = _features(upper, lower)
-    n_roots = _winding_number(fun, *box, features)
+    box, n_roots = _count_in_search_box(fun, upper, lower, f, radius, features)
     roots = _isolate(fun, box, n_roots, size_floor=1e-10 * (box[1] - box[0]), features=features)
-    roots = [r for r in roots if r.imag > IM_FLOOR]
+    roots = [r for r in roots if r.imag > box[2]]
     return np.array(sorted((r * upper.c_s for r in roots), key=lambda r: -r.imag), dtype=complex)
 
 
