@@ -421,13 +421,16 @@ def small_friction_slope(upper, lower) -> tuple[float, float] | None:
 def instability_threshold(upper, lower, f_max: float = 10.0, n_grid: int = 40) -> float:
     """The smallest f > 0 with a growing mode (the body 1 slipping in +x), or inf below f_max.
 
-    0 when a generalized Rayleigh wave exists (unstable for every f > 0). Otherwise a scan of
-    (0, f_max] on n_grid points and a bisection (to 1e-6 relative) of the first stable-unstable
-    transition. Only the onset: for a near-rigid substrate and nu < 1/3 the unstable range is
-    bounded above too (the flutter wedge).
+    0 when a generalized Rayleigh wave exists and the coupling does not vanish there (unstable for
+    every f > 0, ``small_friction_slope``). Otherwise a scan of (0, f_max] on n_grid points and a
+    bisection (to 1e-6 relative) of the first stable-unstable transition. Only the onset: for a
+    near-rigid substrate and nu < 1/3 the unstable range is bounded above too (the flutter wedge).
+    A growth rate below IM_FLOOR c_s1 per unit k counts as neutral, so a mode whose growth vanishes
+    only as f -> 0 (the backward mode on a very stiff substrate) gives a threshold near 1e-5.
     """
     upper, lower = _as_solid(upper), _as_solid(lower)
-    if generalized_rayleigh_speed(upper, lower) is not None:
+    slope = small_friction_slope(upper, lower)
+    if slope is not None and slope[1] > IM_FLOOR * upper.c_s:
         return 0.0
     grid = np.linspace(f_max / n_grid, f_max, n_grid)
     previous = 0.0

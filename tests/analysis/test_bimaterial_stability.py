@@ -152,6 +152,9 @@ def test_identical_materials_have_no_coupling_and_no_growing_mode(nu):
         regime = bs.bimaterial_regime(E1, nu, RHO, E1, nu, RHO, f)
         assert not regime["unstable"] and regime["growth_rate_per_k"] == 0.0 and regime["direction"] is None
         assert regime["c_gR"] == pytest.approx(rayleigh_speed_ratio(nu) * solid.c_s, rel=1e-13)
+    speed, rate = bs.small_friction_slope(solid, solid)
+    assert abs(rate) < 1e-13 * solid.c_s
+    assert bs.instability_threshold(solid, solid, f_max=5.0, n_grid=10) == math.inf
 
 
 # --- rigid substrate: the flutter analysis -------------------------------------------------------
