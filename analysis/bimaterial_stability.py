@@ -41,6 +41,13 @@ normal displacement (the dynamic Dundurs coupling). At ``c -> 0`` it tends to
   both real there), one up, one down: a growing mode for every ``f > 0`` (Ranjith & Rice 2001),
   ``Im c`` proportional to ``f``, moving near ``c_gR``.
 
+* Away from these limits the growing roots form two families (docs/bimaterial-theory.md, section 4):
+  a *forward* one near the slower shear speed, in the slip direction of the more compliant body (the
+  flutter mode, Ranjith & Rice's mode), and a *backward* one at or beyond the P speed of the more
+  compliant body, running the other way: Adams' radiating backward wave of the rigid flat
+  (``analysis.supersonic``), made growing by the substrate's compliance (growth ~ mu_1 / mu_2 on a
+  stiff substrate).
+
 Growth: ``|exp(-i k c t)| = exp(k Im(c) t)``. The relation (3) has no length scale, so a root ``c``
 does not depend on ``k`` and the growth rate ``k Im(c)`` is proportional to ``k`` (ill-posedness);
 ``Im c`` (m/s) is the growth rate per unit wavenumber. Direction: ``Re c > 0`` runs in ``+x``, the
@@ -168,10 +175,11 @@ def boundary_matrix(c, solid, side: int, k: float = 1.0) -> np.ndarray:
 
 
 def interface_matrix(c, upper, lower, f: float, k: float = 1.0) -> np.ndarray:
-    """4x4 matrix of conditions (1) on (A_1, B_1, A_2, B_2), rows scaled to be dimensionless.
+    """4x4 matrix of conditions (1) on the amplitudes (A_1, B_1, A_2, B_2) (m^2).
 
-    Rows: k (u_y(1) - u_y(2)); (sigma_yy(1) - sigma_yy(2)) / (mu_1 k); (sigma_xy(1) - sigma_xy(2)) /
-    (mu_1 k); (sigma_xy(1) + f sigma_yy(1)) / (mu_1 k). With f = 0 it is the frictionless problem of
+    Rows, all of the form k^2 x (amplitude), dimensionless: k (u_y(1) - u_y(2));
+    (sigma_yy(1) - sigma_yy(2)) / (mu_1 k); (sigma_xy(1) - sigma_xy(2)) / (mu_1 k);
+    (sigma_xy(1) + f sigma_yy(1)) / (mu_1 k). With f = 0 it is the frictionless problem of
     ``analysis.interface_wave``. An independent oracle of eq. (3): det = 0 at its roots.
     """
     upper, lower = _as_solid(upper), _as_solid(lower)

@@ -84,6 +84,16 @@ def test_surface_compliance_inverts_the_boundary_rows(side):
                                    bs.surface_compliance(c, solid, side) @ tractions, rtol=1e-12)
 
 
+@pytest.mark.parametrize("nu", (0.0, 0.2, 0.45, 0.49))
+def test_rayleigh_function_has_no_zero_in_the_upper_half_plane(nu):
+    # Psi = r_1 r_2 Delta has the zeros of Delta there only if r has none (argument principle)
+    gamma = ElasticSolid(E1, nu, RHO).gamma
+    features = np.array([0.0, 1.0, -1.0, 1.0 / math.sqrt(gamma), -1.0 / math.sqrt(gamma)], dtype=complex)
+    count = bs._winding_number(lambda s: bs.reduced_rayleigh_function(s, gamma), -50.0, 50.0, 1e-9, 50.0,
+                               features)
+    assert count == 0
+
+
 # --- the dispersion relation and its roots -------------------------------------------------------
 
 CASES = [(0.2, 3.0, 1.0), (0.2, 10.0, 1.5), (0.45, 3.0, 2.0), (0.45, 1 / 3, 1.0), (0.3, 1.5, 0.5),
