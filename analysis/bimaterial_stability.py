@@ -278,15 +278,23 @@ def _winding_number(fun, x0: float, x1: float, y0: float, y1: float, features: n
     raise ArithmeticError("argument principle: contour refinement did not converge")
 
 
-def _newton(fun, s: complex, max_iterations: int = 60) -> complex | None:
+def _newton(fun, s: complex, box=None, max_iterations: int = 60) -> complex | None:
+    """Newton's method on fun from s; None if it stalls or leaves box (x0, x1, y0, y1) enlarged by
+    half its size on every side (the root sought lies in the box)."""
+    if box is not None:
+        x0, x1, y0, y1 = box
+        margin = 0.5 * max(x1 - x0, y1 - y0)
+    step = complex(math.inf)
     for _ in range(max_iterations):
         h = 1e-7 * max(1.0, abs(s))
-        value = complex(fun(np.array([s]))[0])
-        slope = complex((fun(np.array([s + h]))[0] - fun(np.array([s - h]))[0]) / (2.0 * h))
+        values = fun(np.array([s, s + h, s - h]))
+        slope = complex((values[1] - values[2]) / (2.0 * h))
         if slope == 0 or not math.isfinite(abs(slope)):
             return None
-        step = value / slope
+        step = complex(values[0]) / slope
         s -= step
+        if box is not None and not (x0 - margin <= s.real <= x1 + margin and y0 - margin <= s.imag <= y1 + margin):
+            return None
         if abs(step) <= 1e-15 * max(1.0, abs(s)):
             return s
     return s if abs(step) <= 1e-10 * max(1.0, abs(s)) else None
@@ -299,7 +307,7 @@ def _isolate(fun, box, n_roots: int, size_floor: float, features: np.ndarray,
         return []
     x0, x1, y0, y1 = box
     if n_roots == 1:
-        root = _newton(fun, complex(0.5 * (x0 + x1), 0.5 * (y0 + y1)))
+        root = _newton(fun, complex(0.5 * (x0 + x1), 0.5 * (y0 + y1)), box)
         # a zero of fun inside the box is its only one (the count is 1); the bottom edge is strict,
         # a neutral root just below it must not be taken for the growing one
         pad = 1e-12 * max(x1 - x0, y1 - y0)
