@@ -96,6 +96,8 @@ __all__ = [
     "count_growing_roots",
     "growing_roots",
     "small_friction_slope",
+    "compliant_slip_direction",
+    "mode_family",
     "instability_threshold",
     "bimaterial_regime",
 ]
@@ -434,7 +436,28 @@ def small_friction_slope(upper, lower) -> tuple[float, float] | None:
     return (c_gr, rate) if rate > 0.0 else (-c_gr, -rate)
 
 
-def instability_threshold(upper, lower, f_max: float = 10.0, n_grid: int = 40) -> float:
+def compliant_slip_direction(upper, lower) -> int:
+    """+1 if the layer (body 1) is the more compliant (mu_1 < mu_2): its slip direction, +x, is the
+    "slip direction of the more compliant material"; -1 if the substrate is (its slip direction
+    relative to the layer is -x); 0 for equal shear moduli."""
+    upper, lower = _as_solid(upper), _as_solid(lower)
+    return int(np.sign(lower.shear_modulus - upper.shear_modulus))
+
+
+def mode_family(c: complex, upper, lower) -> str:
+    """"forward" if the mode runs in the slip direction of the more compliant body, "backward" if
+    against it, "standing" for |Re c| < STANDING c_s1, "equal_moduli" if mu_1 = mu_2. c in m/s."""
+    upper, lower = _as_solid(upper), _as_solid(lower)
+    direction = compliant_slip_direction(upper, lower)
+    if abs(complex(c).real) < STANDING * upper.c_s:
+        return "standing"
+    if direction == 0:
+        return "equal_moduli"
+    return "forward" if np.sign(complex(c).real) == direction else "backward"
+
+
+def instability_threshold(upper, lower, f_max: float = 10.0, n_grid: int = 40,
+                          family: str | None = None) -> float:
     """The smallest f > 0 with a growing mode (the body 1 slipping in +x), or inf below f_max.
 
     0 when a generalized Rayleigh wave exists and the coupling does not vanish there (unstable for
@@ -443,19 +466,29 @@ def instability_threshold(upper, lower, f_max: float = 10.0, n_grid: int = 40) -
     near-rigid substrate and nu < 1/3 the unstable range is bounded above too (the flutter wedge).
     A growth rate below IM_FLOOR c_s1 per unit k counts as neutral, so a mode whose growth vanishes
     only as f -> 0 (the backward mode on a very stiff substrate) gives a threshold near 1e-5.
+    family: None (any growing mode), "forward" or "backward" (``mode_family``): the onset of that
+    family only (the generalized Rayleigh mode is forward).
     """
     upper, lower = _as_solid(upper), _as_solid(lower)
+    if family not in (None, "forward", "backward"):
+        raise ValueError(f"family = {family!r} outside the allowed range {{None, 'forward', 'backward'}}")
     slope = small_friction_slope(upper, lower)
-    if slope is not None and slope[1] > IM_FLOOR * upper.c_s:
+    if family != "backward" and slope is not None and slope[1] > IM_FLOOR * upper.c_s:
         return 0.0
+
+    def unstable(f: float) -> bool:
+        if family is None:
+            return count_growing_roots(upper, lower, f) > 0
+        return any(mode_family(c, upper, lower) == family for c in growing_roots(upper, lower, f))
+
     grid = np.linspace(f_max / n_grid, f_max, n_grid)
     previous = 0.0
     for f in grid:
-        if count_growing_roots(upper, lower, f) > 0:
+        if unstable(f):
             low, high = previous, float(f)
             while high - low > 1e-6 * high:
                 middle = 0.5 * (low + high)
-                if count_growing_roots(upper, lower, middle) > 0:
+                if unstable(middle):
                     high = middle
                 else:
                     low = middle
@@ -484,6 +517,11 @@ def bimaterial_regime(E1: float, nu1: float, rho1: float, E2: float, nu2: float,
         n_growing : int                 number of growing modes
         modes : list of (float, float)  (phase speed, growth rate per k) of every growing mode (m/s),
                                         most unstable first
+        compliant_body : str or None    "layer" or "substrate" (lower shear modulus), None if equal
+        family : str or None            ``mode_family`` of the most unstable mode
+        forward_growth_rate_per_k, backward_growth_rate_per_k : float
+                                        Im c of the most unstable mode of each family (m/s; 0 if none)
+        forward_phase_speed, backward_phase_speed : float or None   their Re c (m/s)
     """
     upper, lower = ElasticSolid(E1, nu1, rho1), ElasticSolid(E2, nu2, rho2)
     c_gr = generalized_rayleigh_speed(upper, lower)
@@ -496,7 +534,7 @@ def bimaterial_regime(E1: float, nu1: float, rho1: float, E2: float, nu2: float,
         direction = "standing"
     else:
         direction = "+x" if top.real > 0.0 else "-x"
-    return {
+    result = {
         "c_gR": c_gr,
         "c_gR_over_cs1": None if c_gr is None else c_gr / upper.c_s,
         "unstable": bool(unstable),
@@ -507,4 +545,11 @@ def bimaterial_regime(E1: float, nu1: float, rho1: float, E2: float, nu2: float,
         "direction": direction,
         "n_growing": int(roots.size),
         "modes": [(float(r.real), float(r.imag)) for r in roots],
+        "compliant_body": {1: "layer", -1: "substrate", 0: None}[compliant_slip_direction(upper, lower)],
+        "family": mode_family(top, upper, lower) if unstable else None,
     }
+    for name in ("forward", "backward"):
+        members = [r for r in roots if mode_family(r, upper, lower) == name]  # sorted: strongest first
+        result[f"{name}_growth_rate_per_k"] = float(members[0].imag) if members else 0.0
+        result[f"{name}_phase_speed"] = float(members[0].real) if members else None
+    return result

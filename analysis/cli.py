@@ -170,11 +170,13 @@ def _bimaterial(args: argparse.Namespace) -> int:
             if regime["unstable"]:
                 print(f"f {f:g} unstable growth_per_k {regime['growth_rate_per_k_over_cs1']:.6f} "
                       f"phase_speed {regime['phase_speed_over_cs1']:+.6f} direction {regime['direction']} "
-                      f"n_growing {regime['n_growing']}")
+                      f"family {regime['family']} n_growing {regime['n_growing']}")
             else:
                 print(f"f {f:g} stable")
         if args.threshold:
-            print(f"f_threshold {instability_threshold(layer, substrate):.6g}")
+            onsets = [instability_threshold(layer, substrate, family=family)
+                      for family in (None, "forward", "backward")]
+            print("f_threshold {:.6g} forward {:.6g} backward {:.6g}".format(*onsets))
     return 0
 
 
@@ -250,7 +252,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--E", type=float, default=1000.0, help="E of the layer, Pa (default %(default)g)")
     p.add_argument("--rho", type=float, default=1000.0, help="rho of the layer, kg/m^3 (default %(default)g)")
     p.add_argument("--threshold", action="store_true",
-                   help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave)")
+                   help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
+                        "of any family, forward and backward (docs/bimaterial-theory.md)")
     p.set_defaults(handler=_bimaterial)
     return parser
 

@@ -195,6 +195,8 @@ def test_stiff_substrate_roots_tend_to_the_flutter_root_and_adams_backward_wave(
         assert roots.size == 2
         forward = roots[np.argmin(np.abs(roots - flutter_root))]
         backward = roots[np.argmin(np.abs(roots - adams))]
+        assert bs.mode_family(forward * upper.c_s, upper, lower) == "forward"
+        assert bs.mode_family(backward * upper.c_s, upper, lower) == "backward"
         forward_errors.append(abs(forward - flutter_root))
         assert abs(backward.real - adams) < 1e-3
         backward_growth.append(backward.imag)
@@ -242,6 +244,8 @@ def test_generalized_rayleigh_pair_is_unstable_for_every_friction(nu, ratio, dir
     tiny = bs.growing_roots(upper, lower, 1e-5)
     assert tiny.size >= 1 and tiny[0].imag > 0.0
     assert bs.instability_threshold(upper, lower) == 0.0
+    assert bs.mode_family(tiny[0], upper, lower) == "forward"
+    assert bs.compliant_slip_direction(upper, lower) == direction
 
 
 @pytest.mark.parametrize("nu, ratio", [(0.2, 3.0), (0.2, 1 / 3), (0.45, 3.0)])
@@ -268,6 +272,18 @@ def test_regime_places_a_point():
     assert regime["growth_rate_per_k_over_cs1"] * ElasticSolid(E1, 0.2, RHO).c_s == pytest.approx(
         regime["growth_rate_per_k"], rel=1e-14)
     assert not bs.bimaterial_regime(E1, 0.2, RHO, 3 * E1, 0.2, RHO, 0.3)["unstable"]
+    # families: the layer on a stiffer substrate is the more compliant body, forward = +x
+    assert regime["compliant_body"] == "layer" and regime["family"] == "forward"
+    assert regime["forward_growth_rate_per_k"] == regime["growth_rate_per_k"]
+    assert regime["backward_growth_rate_per_k"] == 0.0 and regime["backward_phase_speed"] is None
+    # the mirror pair: the substrate is the more compliant, both families keep their growth rates
+    soft = bs.bimaterial_regime(E1, 0.45, RHO, E1 / 3, 0.45, RHO, 1.0)
+    stiff = bs.bimaterial_regime(E1 / 3, 0.45, RHO, E1, 0.45, RHO, 1.0)
+    assert soft["compliant_body"] == "substrate" and stiff["compliant_body"] == "layer"
+    for name in ("forward", "backward"):
+        assert soft[f"{name}_growth_rate_per_k"] == pytest.approx(stiff[f"{name}_growth_rate_per_k"], rel=1e-10)
+        assert soft[f"{name}_phase_speed"] == pytest.approx(-stiff[f"{name}_phase_speed"], rel=1e-10)
+    assert soft["family"] == "backward" and soft["direction"] == "+x"
 
 
 def test_bad_input_names_the_key_and_range():
@@ -275,5 +291,20 @@ def test_bad_input_names_the_key_and_range():
         bs.growing_roots(*_pair(0.2, 3.0), math.nan)
     with pytest.raises(ValueError, match=r"^E = .* outside the allowed range"):
         bs.bimaterial_regime(E1, 0.2, RHO, -1.0, 0.2, RHO, 1.0)
+    with pytest.raises(ValueError, match=r"^family = .* outside the allowed range"):
+        bs.instability_threshold(*_pair(0.2, 3.0), family="sideways")
     with pytest.raises(ValueError, match=r"^side = "):
         bs.surface_compliance(1.0, ElasticSolid(E1, 0.2, RHO), 0)
+
+
+def test_forward_onset_on_a_stiff_substrate_tends_to_renardys_threshold():
+    # the flutter wedge starts at f = 1 (analysis.flutter); on a substrate mu_2 / mu_1 times stiffer
+    # the forward family starts below it by O(mu_1 / mu_2)
+    nu = 0.45
+    gaps = []
+    for ratio in (1e2, 1e3):
+        upper, lower = _pair(nu, ratio)
+        onset = bs.instability_threshold(upper, lower, f_max=1.2, n_grid=3, family="forward")
+        gaps.append(flutter.flutter_boundary(nu)[0] - onset)
+    assert 0.0 < gaps[1] < gaps[0] < 2e-2
+    assert gaps[1] / gaps[0] == pytest.approx(0.1, rel=0.1)

@@ -109,11 +109,12 @@ def test_bimaterial_command_prints_the_regime_of_the_theory(capsys):
     regime = bimaterial_regime(1000.0, 0.2, 1000.0, 3000.0, 0.2, 1000.0, 1.0)
     (line,) = [line for line in lines if line.startswith("f 1 ")]
     words = line.split()
-    assert words[2] == "unstable" and words[8] == regime["direction"]
+    assert words[2] == "unstable" and words[8] == regime["direction"] and words[10] == regime["family"]
     assert float(words[4]) == pytest.approx(regime["growth_rate_per_k_over_cs1"], abs=1e-6)
     assert float(words[6]) == pytest.approx(regime["phase_speed_over_cs1"], abs=1e-6)
-    threshold = instability_threshold(ElasticSolid(1000.0, 0.2, 1000.0), ElasticSolid(3000.0, 0.2, 1000.0))
-    assert lines[-1] == f"f_threshold {threshold:.6g}"
+    pair = ElasticSolid(1000.0, 0.2, 1000.0), ElasticSolid(3000.0, 0.2, 1000.0)
+    onsets = [instability_threshold(*pair, family=family) for family in (None, "forward", "backward")]
+    assert lines[-1] == "f_threshold {:.6g} forward {:.6g} backward {:.6g}".format(*onsets)
     # identical materials: the Rayleigh wave, stable
     assert cli.main(["bimaterial", "--E-ratio", "1", "--nu", "0.25", "--f", "2"]) == 0
     lines = capsys.readouterr().out.splitlines()
