@@ -1,7 +1,7 @@
 r"""Linear stability of steady Coulomb sliding between two elastic half-spaces (no regularization).
 
-Problem and conventions (derivation in docs/bimaterial-theory.md, section 3)
---------------------------------------------------------------------------
+Problem and conventions (derivation in docs/bimaterial-theory.md, sections 1, 2 and 4)
+-------------------------------------------------------------------------------------
 Plane strain. Body 1 (the layer; ``mu_1``, ``rho_1``, ``c_s1``, ``c_l1``) fills ``y > 0``, body 2 (the
 substrate) ``y < 0``. Steady state: uniform contact pressure ``p0 > 0`` and body 1 slipping in
 ``+x`` relative to body 2 (slip rate ``V = v_x(1) - v_x(2) > 0`` on ``y = 0``; ``V`` small against
@@ -34,7 +34,7 @@ normal displacement (the dynamic Dundurs coupling). At ``c -> 0`` it tends to
 
 * Identical solids: the bracket vanishes identically and ``Delta = 2 q_l / r``; its only zero is the
   grazing P wave ``c = c_l`` (real): no growing mode for any ``f``.
-* Rigid substrate (``mu_2 -> inf``): ``r_1 Delta -> s^2 q_l1 + i f (2 - s^2 - 2 q_l1 q_s1)``, the
+* Rigid substrate (``mu_2 -> inf``): ``s^2 r_1 Delta -> s^2 q_l1 + i f (2 - s^2 - 2 q_l1 q_s1)``, the
   flutter determinant of ``analysis.flutter``: its wedge ``1 < f < f_upper(nu)``.
 * Dissimilar solids with a generalized Rayleigh wave (``c_gR``): at ``f = 0`` (3) has the real zeros
   ``+-c_gR``; for small ``f`` they move off the real axis by ``dc/df = i Q / P'`` (``P``, ``Q`` below,
@@ -53,8 +53,8 @@ does not depend on ``k`` and the growth rate ``k Im(c)`` is proportional to ``k`
 ``Im c`` (m/s) is the growth rate per unit wavenumber. Direction: ``Re c > 0`` runs in ``+x``, the
 slip direction of body 1 (relative to body 2); ``Re c < 0`` in ``-x``, the slip direction of body 2
 (relative to body 1). "The slip direction of the more compliant material" (Ranjith & Rice) is thus
-``+x`` when the layer is the more compliant (a stiffer substrate, E_2 > E_1 at equal nu and rho) and
-``-x`` when the substrate is.
+``+x`` when the layer is the more compliant (here: the lower shear modulus; a stiffer substrate,
+E_2 > E_1 at equal nu) and ``-x`` when the substrate is (``compliant_slip_direction``).
 
 Root finding
 ------------
@@ -393,11 +393,16 @@ def growing_roots(upper, lower, f: float, radius: float | None = None) -> np.nda
         Coulomb coefficient (f < 0: body 1 slips in -x).
     radius : float, optional
         Half-width W of the search rectangle in units of c_s1 (default 4 (1 + |f|) c_l,max / c_s1 + 4).
+
+    Raises
+    ------
+    ArithmeticError
+        when the zero count cannot be made consistent (a root on every contour tried).
     """
     upper, lower = _as_solid(upper), _as_solid(lower)
     f = _check_f(f)
     if f == 0.0:
-        return np.empty(0, dtype=complex)  # Psi is real on the real axis and conservative: no growth
+        return np.empty(0, dtype=complex)  # frictionless contact conserves energy: nothing grows
 
     def fun(s):
         return _psi(s, upper, lower, f)

@@ -103,7 +103,7 @@ def test_bimaterial_command_prints_the_regime_of_the_theory(capsys):
     from analysis.interface_wave import ElasticSolid
 
     assert cli.main(["bimaterial", "--E-ratio", "3", "--nu", "0.2", "--nu-substrate", "0.2",
-                     "--f", "0.5", "1", "--threshold"]) == 0
+                     "--f", "0.5", "1"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert "c_gR none" in lines and "f 0.5 stable" in lines
     regime = bimaterial_regime(1000.0, 0.2, 1000.0, 3000.0, 0.2, 1000.0, 1.0)
@@ -112,9 +112,14 @@ def test_bimaterial_command_prints_the_regime_of_the_theory(capsys):
     assert words[2] == "unstable" and words[8] == regime["direction"] and words[10] == regime["family"]
     assert float(words[4]) == pytest.approx(regime["growth_rate_per_k_over_cs1"], abs=1e-6)
     assert float(words[6]) == pytest.approx(regime["phase_speed_over_cs1"], abs=1e-6)
-    pair = ElasticSolid(1000.0, 0.2, 1000.0), ElasticSolid(3000.0, 0.2, 1000.0)
+    # a pair with a generalized Rayleigh wave: unstable from f = 0 on (forward), backward above a threshold
+    assert cli.main(["bimaterial", "--E-ratio", "1.5", "--nu", "0.2", "--f", "0.5", "--threshold"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    pair = ElasticSolid(1000.0, 0.2, 1000.0), ElasticSolid(1500.0, 0.2, 1000.0)
     onsets = [instability_threshold(*pair, family=family) for family in (None, "forward", "backward")]
+    assert onsets[0] == onsets[1] == 0.0 and onsets[2] > 0.5
     assert lines[-1] == "f_threshold {:.6g} forward {:.6g} backward {:.6g}".format(*onsets)
+    assert lines[2] == "c_gR 0.983791"
     # identical materials: the Rayleigh wave, stable
     assert cli.main(["bimaterial", "--E-ratio", "1", "--nu", "0.25", "--f", "2"]) == 0
     lines = capsys.readouterr().out.splitlines()
