@@ -1,4 +1,4 @@
-"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,score-rules,flutter-boundary} ...`.
+"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,score-rules,flutter-boundary,bimaterial} ...`.
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
 none; 2 bad input (the message on stderr names the file and the problem; no output file is
@@ -138,6 +138,48 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bimaterial(args: argparse.Namespace) -> int:
+    from analysis.bimaterial_stability import bimaterial_regime, instability_threshold
+    from analysis.interface_wave import ElasticSolid
+
+    nu_substrate = args.nu if args.nu_substrate is None else args.nu_substrate
+    values = [("--E", args.E), ("--rho", args.rho), ("--rho-ratio", args.rho_ratio)]
+    values += [("--E-ratio", ratio) for ratio in args.E_ratio]
+    for key, value in values:
+        if not (value > 0.0 and value < float("inf")):
+            raise InputError(f"{key} {value} outside (0, inf)")
+    for key, value in (("--nu", args.nu), ("--nu-substrate", nu_substrate)):
+        if not 0.0 <= value < 0.5:
+            raise InputError(f"{key} {value} outside [0, 0.5)")
+    for f in args.f:
+        if not (f > 0.0 and f < float("inf")):
+            raise InputError(f"--f {f} outside (0, inf)")
+    layer = ElasticSolid(args.E, args.nu, args.rho)
+    print(f"layer E {layer.E:g} Pa nu {layer.nu:g} rho {layer.rho:g} kg/m^3 c_s1 {layer.c_s:.6g} m/s; "
+          "speeds and growth rates per unit wavenumber in units of c_s1; + = +x = the layer's slip direction")
+    for ratio in args.E_ratio:
+        substrate = ElasticSolid(args.E * ratio, nu_substrate, args.rho * args.rho_ratio)
+        print(f"E_ratio {ratio:g} substrate E {substrate.E:g} Pa nu {substrate.nu:g} rho {substrate.rho:g} "
+              f"kg/m^3 c_s2/c_s1 {substrate.c_s / layer.c_s:.6g}")
+        for f in args.f:
+            regime = bimaterial_regime(layer.E, layer.nu, layer.rho, substrate.E, substrate.nu,
+                                       substrate.rho, f)
+            if f == args.f[0]:
+                c_gr = regime["c_gR_over_cs1"]
+                print("c_gR " + ("none" if c_gr is None else f"{c_gr:.6f}"))
+            if regime["unstable"]:
+                print(f"f {f:g} unstable growth_per_k {regime['growth_rate_per_k_over_cs1']:.6f} "
+                      f"phase_speed {regime['phase_speed_over_cs1']:+.6f} direction {regime['direction']} "
+                      f"family {regime['family']} n_growing {regime['n_growing']}")
+            else:
+                print(f"f {f:g} stable")
+        if args.threshold:
+            onsets = [instability_threshold(layer, substrate, family=family)
+                      for family in (None, "forward", "backward")]
+            print("f_threshold {:.6g} forward {:.6g} backward {:.6g}".format(*onsets))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
 
@@ -197,6 +239,22 @@ def build_parser() -> argparse.ArgumentParser:
                             help="print 'nu f_lower f_upper' of the flutter wedge, one line per nu")
     p.add_argument("--nu", type=float, nargs="+", required=True, help="Poisson's ratios")
     p.set_defaults(handler=_flutter_boundary)
+
+    p = commands.add_parser("bimaterial",
+                            help="generalized Rayleigh speed and the most unstable mode of steady sliding "
+                                 "of the layer on a deformable substrate (analysis/bimaterial_stability.py)")
+    p.add_argument("--E-ratio", type=float, nargs="+", required=True,
+                   help="E_substrate / E_layer (one block of output per value)")
+    p.add_argument("--nu", type=float, required=True, help="Poisson's ratio of the layer")
+    p.add_argument("--nu-substrate", type=float, help="Poisson's ratio of the substrate (default: --nu)")
+    p.add_argument("--rho-ratio", type=float, default=1.0, help="rho_substrate / rho_layer (default %(default)g)")
+    p.add_argument("--f", type=float, nargs="+", required=True, help="Coulomb coefficients")
+    p.add_argument("--E", type=float, default=1000.0, help="E of the layer, Pa (default %(default)g)")
+    p.add_argument("--rho", type=float, default=1000.0, help="rho of the layer, kg/m^3 (default %(default)g)")
+    p.add_argument("--threshold", action="store_true",
+                   help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
+                        "of any family, forward and backward (docs/bimaterial-theory.md)")
+    p.set_defaults(handler=_bimaterial)
     return parser
 
 

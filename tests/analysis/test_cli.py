@@ -96,3 +96,41 @@ def test_measure_refuses_to_write_over_its_input(run_file, tmp_path):
     for output in (run, link, hard, tmp_path / "." / run.name):
         assert cli.main(["measure", str(run), "-o", str(output)]) == 2
     assert run.read_bytes() == before
+
+
+def test_bimaterial_command_prints_the_regime_of_the_theory(capsys):
+    from analysis.bimaterial_stability import bimaterial_regime, instability_threshold
+    from analysis.interface_wave import ElasticSolid
+
+    assert cli.main(["bimaterial", "--E-ratio", "3", "--nu", "0.2", "--nu-substrate", "0.2",
+                     "--f", "0.5", "1"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "c_gR none" in lines and "f 0.5 stable" in lines
+    regime = bimaterial_regime(1000.0, 0.2, 1000.0, 3000.0, 0.2, 1000.0, 1.0)
+    (line,) = [line for line in lines if line.startswith("f 1 ")]
+    words = line.split()
+    assert words[2] == "unstable" and words[8] == regime["direction"] and words[10] == regime["family"]
+    assert float(words[4]) == pytest.approx(regime["growth_rate_per_k_over_cs1"], abs=1e-6)
+    assert float(words[6]) == pytest.approx(regime["phase_speed_over_cs1"], abs=1e-6)
+    # a pair with a generalized Rayleigh wave: unstable from f = 0 on (forward), backward above a threshold
+    assert cli.main(["bimaterial", "--E-ratio", "1.5", "--nu", "0.2", "--f", "0.5", "--threshold"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    pair = ElasticSolid(1000.0, 0.2, 1000.0), ElasticSolid(1500.0, 0.2, 1000.0)
+    onsets = [instability_threshold(*pair, family=family) for family in (None, "forward", "backward")]
+    assert onsets[0] == onsets[1] == 0.0 and onsets[2] > 0.5
+    assert lines[-1] == "f_threshold {:.6g} forward {:.6g} backward {:.6g}".format(*onsets)
+    assert lines[2] == "c_gR 0.983791"
+    # identical materials: the Rayleigh wave, stable
+    assert cli.main(["bimaterial", "--E-ratio", "1", "--nu", "0.25", "--f", "2"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "c_gR 0.919402" in lines and "f 2 stable" in lines
+
+
+@pytest.mark.parametrize("args, message", [(["--E-ratio", "0", "--nu", "0.2", "--f", "1"], "--E-ratio 0.0 outside"),
+                                           (["--E-ratio", "2", "--nu", "0.5", "--f", "1"], "--nu 0.5 outside"),
+                                           (["--E-ratio", "2", "--nu", "0.2", "--nu-substrate", "-0.1",
+                                             "--f", "1"], "--nu-substrate -0.1 outside"),
+                                           (["--E-ratio", "2", "--nu", "0.2", "--f", "-1"], "--f -1.0 outside")])
+def test_bimaterial_command_rejects_bad_input(args, message, capsys):
+    assert cli.main(["bimaterial", *args]) == 2
+    assert message in capsys.readouterr().err
