@@ -98,6 +98,7 @@ rule paper_numbers:
         table="results/study/table/table1.csv",
         grid=lambda wc: f"results/{numbers_spec()['grid']}/table/all_metrics.csv",
         sweeps=lambda wc: [f"results/{sweep}/table/all_metrics.csv" for sweep in numbers_spec()["sweeps"].values()],
+        meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],
     output:
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
@@ -105,11 +106,13 @@ rule paper_numbers:
         cell=f"{config['defaults']['nu']} {config['defaults']['f']}",
         sweeps=lambda wc: " ".join(f"--sweep {role} {swept_parameter(sweep)} results/{sweep}/table/all_metrics.csv"
                                    for role, sweep in numbers_spec()["sweeps"].items()),
+        meshes=lambda wc: " ".join(shlex.quote(f"--other-mesh={label}=results/{sweep}/table/table1.csv")
+                                   for label, sweep in numbers_spec().get("meshes", {}).items()),
     log: "logs/paper_numbers.log"
     shell:
         "({PYTHON} {input.numbers_script} --summary {input.summary} --runs {input.runs} --grid {input.grid}"
         " --table1 {input.table} --reference-cell {params.cell} {params.sweeps} -o {output.numbers}"
-        " && {PYTHON} {input.table_script} {input.table} -o {output.table}) > {log} 2>&1"
+        " && {PYTHON} {input.table_script} {input.table} {params.meshes} -o {output.table}) > {log} 2>&1"
 
 
 rule paper_variants:
