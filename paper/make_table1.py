@@ -143,7 +143,10 @@ def render(rows, other_meshes=()):
     notes = [f"({flag_mark(f)}) {QUALITY_MARKS[f][1] if f in QUALITY_MARKS else 'flag ' + flag_mark(f)}"
              for f in used_flags]
     if flipped:
-        notes.append(f"(m) the sign differs at another mesh, so not counted as reproduced: {', '.join(flipped)}")
+        n_bold = sum(r["reproduced"] is True and not sign_flips(r, other_meshes) for r in published)
+        n_reproduced = sum(r["reproduced"] is True for r in published)
+        notes.append(f"(m) the sign differs at another mesh, so not set in bold: {', '.join(flipped)} "
+                     f"({n_bold} cells bold; reproduced at this mesh alone: {n_reproduced})")
     ended = sorted({r["end_reason"] for r in published if isinstance(r["end_reason"], str)})
     if ended:
         notes.append(f"$^{{*}}$ run did not complete: {', '.join(label(e) for e in ended)}")

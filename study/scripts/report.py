@@ -263,7 +263,8 @@ def runs_html(runs: list[dict]) -> str:
     out.append("</table></div>")
     out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
                "the run; with hht_alpha &gt; 0 it is the algorithmic dissipation of HHT (measured term by "
-               "term against the residual in paper/reproduction.pdf, &ldquo;What the energy residual is&rdquo;; "
+               "term against the residual in the reproduction report, section &ldquo;What the energy residual "
+               "is&rdquo;, which <code>snakemake -c2 all</code> builds as paper/reproduction.pdf; "
                "docs/energy-balance.md). "
                "Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")

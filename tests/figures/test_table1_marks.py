@@ -68,7 +68,8 @@ def test_a_sign_flip_at_another_mesh_is_marked_and_not_bold(tmp_path):
     assert r"\textsuperscript{(m)}" in flipped and r"\mathbf" not in flipped
     kept = table_row(text, 0.2, 1.5)
     assert r"\mathbf" in kept and "(m)" not in kept  # no front at H/128 is not a sign flip
-    assert "(0.49, 1.5) at H/32 and H/128" in text.split(r"\end{tabular}")[1]
+    notes = text.split(r"\end{tabular}")[1]
+    assert "(0.49, 1.5) at H/32 and H/128 (1 cells bold; reproduced at this mesh alone: 2)" in notes
 
 
 def test_without_other_meshes_the_reproduced_cell_is_bold(tmp_path):
