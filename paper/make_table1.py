@@ -151,7 +151,7 @@ def render(rows, other_meshes=()):
     if ended:
         notes.append(f"$^{{*}}$ run did not complete: {', '.join(label(e) for e in ended)}")
     if notes:  # below the tabular, wrapped at the text width
-        lines.append("\\par\\smallskip{\\footnotesize " + "; ".join(notes) + ".\\par}")
+        lines.append("\\par\\smallskip{\\footnotesize\\raggedright " + "; ".join(notes) + ".\\par}")
     return "\n".join(lines) + "\n"
 
 
