@@ -40,7 +40,7 @@ include: "study/rules/movies.smk"
 
 
 rule quick:
-    """The default study: one point per category at H/32, its table, figures and report."""
+    """The default study: four points at H/32 across the regimes, its table, figures and report."""
     default_target: True
     input: lambda wc: sweep_products("quick")
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The step-cost table of the README ("Measured speed"): every case in its own process (so that peak_MB
+# The step-cost table of docs/performance.md: every case in its own process (so that peak_MB
 # is that case's), one line per case, for H/32 ... H/256 at lambda = 2H and H/64 at lambda = 4H, 6H.
 #   bench/step_table.sh [--solver spectral|cholmod] [--threads N] [BUILD_DIR]
 # Columns: those of build/bench/slidewave_bench_step (ms per step by phase, step/slv = one step over one

@@ -29,12 +29,13 @@ THEORY_STYLE = {
 }
 
 
-def save(fig, prefix):
-    """Write PREFIX.png and PREFIX.pdf, creating the folder."""
+def save(fig, prefix, description=None):
+    """Write PREFIX.png and PREFIX.pdf, creating the folder. `description` (text, e.g. the legend's
+    counts as JSON) goes into the PNG's Description chunk, where the study report reads it."""
     folder = os.path.dirname(os.path.abspath(prefix))
     os.makedirs(folder, exist_ok=True)
-    for ext in ("png", "pdf"):
-        fig.savefig(f"{prefix}.{ext}")
+    fig.savefig(f"{prefix}.png", metadata={"Description": description} if description else None)
+    fig.savefig(f"{prefix}.pdf")
     plt.close(fig)
 
 

@@ -20,9 +20,14 @@ over ours: every cell of the paper's Table 1 (an opening wave, Fig. 4a of the pa
 on the left of our marker in its published direction (blue, pointing right: in the sliding
 direction; red, pointing left: against it; from the sign of the published celerity), and a black
 "not equal" sign on the right where the run's category differs from the published one
-(`category_match` false, or no run for the cell).
+(`category_match` false). Only published cells that were run are marked and counted: a study that
+runs a few points (e.g. `quick`) says nothing about the others.
+The nu axis is ticked at every swept nu and at the tenths between them. The legend's counts are
+also written as JSON into the PNG's Description ({"legend": {"published_forward": n, ...}}), so that
+the study report can check them against its table.
 """
 import argparse
+import json
 from collections import Counter
 
 import numpy as np
@@ -73,27 +78,42 @@ def styles_for(categories):
     return styles
 
 
+def run_published_cells(published, rows):
+    """The published cells (rows of table1.csv) that have a run among `rows`."""
+    ran = {(round(r["nu"], 6), round(r["f"], 6)) for r in rows}
+    return [c for c in published if (round(c["nu"], 6), round(c["f"], 6)) in ran]
+
+
+def nu_ticks(nus, lo, hi):
+    """Every swept nu, and the tenths in [lo, hi] not closer than 0.04 to one of them."""
+    tenths = [k / 10 for k in range(int(np.ceil(lo * 10 - 1e-9)), int(np.floor(hi * 10 + 1e-9)) + 1)]
+    return sorted(set(nus) | {t for t in tenths if all(abs(t - nu) >= 0.04 for nu in nus)})
+
+
 def overlay_published(ax, cells):
-    """Arrows and "not equal" signs of the published cells; returns their legend handles and labels."""
+    """Arrows and "not equal" signs of the published cells that were run; returns their legend
+    handles and labels."""
     beside = {dx: offset_copy(ax.transData, fig=ax.figure, x=dx, units="points")
               for dx in (PUBLISHED_OFFSET, DIFFERS_OFFSET)}
-    handles, labels = [], []
+    handles, labels, counts = [], [], {}
     for direction, (label, style) in PUBLISHED_MARK.items():
         chosen = [c for c in cells if (c["published"] > 0) == (direction == "forward")]
+        counts[f"published_{direction}"] = len(chosen)
         if not chosen:
             continue
         ax.plot([c["nu"] for c in chosen], [c["f"] for c in chosen], ls="none", zorder=4,
                 transform=beside[PUBLISHED_OFFSET], **style)
         handles.append(Line2D([], [], ls="none", **style))
         labels.append(f"{label} ({len(chosen)})")
-    # category_match is empty (nan) when the cell has no run with a category: that differs too.
+    # category_match is empty (nan) when the run gave no category: that differs too.
     differs = [c for c in cells if c["category_match"] is not True]
+    counts["differs"] = len(differs)
     if differs:
         ax.plot([c["nu"] for c in differs], [c["f"] for c in differs], ls="none", zorder=5,
                 transform=beside[DIFFERS_OFFSET], **DIFFERS)
         handles.append(Line2D([], [], ls="none", **DIFFERS))
         labels.append(f"our category differs from the\npublished one ({len(differs)})")
-    return handles, labels
+    return handles, labels, counts
 
 
 def parse_args(argv):
@@ -142,6 +162,7 @@ def main(argv=None):
     # 3. One marker per run, by category.
     handles, labels = [], []
     counts = Counter(r["category"] for r in rows)
+    legend_counts = {"categories": dict(counts)}
     for category, (label, layers) in styles.items():
         chosen = [r for r in rows if r["category"] == category]
         if not chosen:
@@ -163,7 +184,8 @@ def main(argv=None):
         labels.append(f"seeds disagree ({len(split)} cells): fraction\nin the majority category")
     # 3c. The paper's classification: a ring per published cell, "not equal" where ours differs.
     if args.published:
-        handles_published, labels_published = overlay_published(ax, read_csv(args.published, PUBLISHED_REQUIRED))
+        published = run_published_cells(read_csv(args.published, PUBLISHED_REQUIRED), rows)
+        handles_published, labels_published, legend_counts["published"] = overlay_published(ax, published)
         handles += handles_published
         labels += labels_published
     handles.append(Line2D([], [], color="k", ls="-.", lw=1.2))
@@ -174,9 +196,10 @@ def main(argv=None):
     # 4. Axes.
     nus = sorted({r["nu"] for r in rows})
     margin = 0.045 if args.published else 0.02  # room for the published marks beside the end columns
-    ax.set_xlim(min(nus + [nu_w.min()]) - margin, max(nus + [nu_w.max()]) + margin)
+    nu_lo, nu_hi = min(nus + [nu_w.min()]), max(nus + [nu_w.max()])
+    ax.set_xlim(nu_lo - margin, nu_hi + margin)
     ax.set_ylim(f_lo, f_hi)
-    ax.set_xticks(nus)
+    ax.set_xticks(nu_ticks(nus, nu_lo, nu_hi))
     ax.set_yticks(fs)
     ax.tick_params(axis="both", labelsize=8)
     ax.grid(alpha=0.25)
@@ -187,7 +210,7 @@ def main(argv=None):
             if args.ensemble else f"{len(rows)} runs")
     ax.set_title(f"Sliding regimes of {what} in the ($\\nu$, $f$) plane"
                  + (f"\n{shared}" if shared else ""))
-    _style.save(fig, args.out)
+    _style.save(fig, args.out, description=json.dumps({"legend": legend_counts}))
     return 0
 
 

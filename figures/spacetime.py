@@ -8,7 +8,7 @@
 x is horizontal, t vertical. Lines of slope 1/c for c_l and c_s (root attributes of the run) and
 for the measured front celerity c_p (metrics.json key `celerity`, when given) start together at
 the left edge (right edge for c_p < 0) and cross the period once, so their slopes can be compared
-with the fronts in the map. `state`: stick black, slip orange, open cyan. Without --tmin the map
+with the fronts in the map; their legend sits below the map, off the data. `state`: stick black, slip orange, open cyan. Without --tmin the map
 starts a little before the slip onset of metrics.json (`onset_time`), else at t = 0. The colour
 scale of slip velocity and opening tops at the 99.5th percentile of |value| (--vmax to set it);
 a field with a significant negative part (back-slip) gets a diverging scale centred on zero.
@@ -94,9 +94,12 @@ def draw_speeds(ax, speeds, x0, x1, t_anchor, light):
         start, end = (x0, x1) if c > 0 else (x1, x0)
         ax.plot([start, end], [t_anchor, t_anchor + (x1 - x0) / abs(c)], color=ink, lw=1.5,
                 ls=style, path_effects=outline, label=f"{label} = {c:+.3f} m/s")
-    legend = ax.legend(loc="lower right", title="slopes $dt/dx = 1/c$", framealpha=0.85,
-                       facecolor="0.55", labelcolor="white", fontsize=8)
-    legend.get_title().set_color("white")
+    # Below the axes, never over the fronts it names; its face matches the map so that the line
+    # handles (ink and halo) read as they do on the map.
+    legend = ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=len(speeds),
+                       title="slopes $dt/dx = 1/c$", fontsize=7, columnspacing=1.0, handlelength=2.2,
+                       facecolor="white" if light else "0.55", labelcolor=ink, framealpha=1.0)
+    legend.get_title().set_color(ink)
     legend.get_title().set_fontsize(8)
 
 

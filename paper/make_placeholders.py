@@ -4,8 +4,9 @@ the report compiles before any run exists.
 
     paper/make_placeholders.py [--force] [--dir paper/generated]
 
-Writes numbers.tex and energy_evidence.tex (every macro \\notavailable) and table1.tex (an empty
-table) when absent, or always with --force. Figures need no placeholder: reproduction.tex draws a
+Writes numbers.tex and energy_evidence.tex (every macro \\notavailable), table1.tex (an empty
+table), claims.tex (the verdict table, empty) and conclusions.tex (a line saying so) when absent, or
+always with --force. Figures need no placeholder: reproduction.tex draws a
 framed note in place of a generated/<name>.pdf that does not exist. Existing generated files are
 never touched without --force.
 """
@@ -28,6 +29,18 @@ $\\nu$ & $f$ & published & regenerated & (\\%) \\\\
 \\end{tabular}
 """
 
+CLAIMS = """% Placeholder written by paper/make_placeholders.py: run paper/make_claims.py.
+\\begin{longtable}{@{}ll@{}}
+\\caption{Verdict on each claim of the paper: \\notavailable{} (not generated yet).}\\label{tab:claims} \\\\
+\\toprule claim of the paper & verdict \\\\ \\midrule
+\\multicolumn{2}{c}{\\notavailable{} (paper/make\\_claims.py has not run)} \\\\
+\\bottomrule
+\\end{longtable}
+"""
+CONCLUSIONS = """% Placeholder written by paper/make_placeholders.py: run paper/make_claims.py.
+\\notavailable{} (the conclusions are drawn from the verdicts of paper/make\\_claims.py, not generated yet).
+"""
+
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -41,6 +54,8 @@ def main(argv=None):
     files = {"numbers.tex": "\\providecommand{\\notavailable}{\\textit{n/a}}\n"
                             + render(placeholders, ["nothing: placeholders"]),
              "table1.tex": TABLE,
+             "claims.tex": CLAIMS,
+             "conclusions.tex": CONCLUSIONS,
              "energy_evidence.tex": render({name: r"\notavailable" for name in ENERGY_MACRO_NAMES},
                                            ["nothing: placeholders"], script="paper/make_energy_evidence.py")}
     for name, text in files.items():

@@ -1,7 +1,7 @@
 """Resources of one `slidewave run`, estimated from mesh size and simulated time.
 
 Cost per step measured on one core with the default solver, nu = 0.2, f = 1.5
-(`build/bench/slidewave_bench_step`, README "Measured speed"): 0.140 ms at H/32, 0.594 ms at H/64,
+(`build/bench/slidewave_bench_step`, docs/performance.md): 0.140 ms at H/32, 0.594 ms at H/64,
 4.50 ms at H/128 (lambda = 2H) and 4.64 ms at H/64 with lambda = 6H. We fit a power of the mesh
 (a factor 2^2.5 per halving of h, exact at H/32 and H/128, 30 % high at H/64) and of the period
 (lambda/2H)^1.87 (the measured ratio 4.64/0.594 between 6H and 2H at H/64):

@@ -1,7 +1,7 @@
 # Study reports (our own HTML: Snakemake 7.21's --report needs internet) and the LaTeX paper.
 
 localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper, energy_evidence_config,
-    paper_energy_evidence
+    paper_energy_evidence, paper_claims
 
 
 def report_inputs(sweeps):
@@ -98,6 +98,7 @@ rule paper_numbers:
         table="results/study/table/table1.csv",
         grid=lambda wc: f"results/{numbers_spec()['grid']}/table/all_metrics.csv",
         sweeps=lambda wc: [f"results/{sweep}/table/all_metrics.csv" for sweep in numbers_spec()["sweeps"].values()],
+        meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],
     output:
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
@@ -105,11 +106,13 @@ rule paper_numbers:
         cell=f"{config['defaults']['nu']} {config['defaults']['f']}",
         sweeps=lambda wc: " ".join(f"--sweep {role} {swept_parameter(sweep)} results/{sweep}/table/all_metrics.csv"
                                    for role, sweep in numbers_spec()["sweeps"].items()),
+        meshes=lambda wc: " ".join(shlex.quote(f"--other-mesh={label}=results/{sweep}/table/table1.csv")
+                                   for label, sweep in numbers_spec().get("meshes", {}).items()),
     log: "logs/paper_numbers.log"
     shell:
         "({PYTHON} {input.numbers_script} --summary {input.summary} --runs {input.runs} --grid {input.grid}"
         " --table1 {input.table} --reference-cell {params.cell} {params.sweeps} -o {output.numbers}"
-        " && {PYTHON} {input.table_script} {input.table} -o {output.table}) > {log} 2>&1"
+        " && {PYTHON} {input.table_script} {input.table} {params.meshes} -o {output.table}) > {log} 2>&1"
 
 
 rule paper_variants:
@@ -123,6 +126,40 @@ rule paper_variants:
                        for label, sweep in config["paper"]["variants"].items())
     log: "logs/paper_variants.log"
     shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
+
+
+def claim_tables():
+    """{table name: results file} of config `paper.claims` (make_claims.py's --table), the sweeps that
+    exist; `table1` is a table1.csv, the others all_metrics.csv. An undeclared sweep is left out, and
+    make_claims.py says which claims it leaves untestable."""
+    tables = {}
+    for name, sweep in config["paper"].get("claims", {}).items():
+        if sweep == "study" or sweep in config["sweeps"]:
+            tables[name] = f"results/{sweep}/table/{'table1.csv' if name == 'table1' else 'all_metrics.csv'}"
+    return tables
+
+
+rule paper_claims:
+    """The verdict on each claim of the paper (study/reference/claims.json) and the report's
+    Conclusions drawn from them (paper/make_claims.py)."""
+    input:
+        script="paper/make_claims.py",
+        claims=repo_path("study/reference/claims.json"),
+        tables=lambda wc: list(claim_tables().values()),
+        meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],
+    output:
+        table="paper/generated/claims.tex",
+        conclusions="paper/generated/conclusions.tex",
+        verdicts="paper/generated/claims.json",
+    params:
+        tolerance=config["reference"]["tolerance"],
+        tables=lambda wc: " ".join(shlex.quote(f"--table={name}={path}") for name, path in claim_tables().items()),
+        meshes=lambda wc: " ".join(shlex.quote(f"--mesh-table={label}=results/{sweep}/table/table1.csv")
+                                   for label, sweep in numbers_spec().get("meshes", {}).items()),
+    log: "logs/paper_claims.log"
+    shell:
+        "{PYTHON} {input.script} --claims {input.claims} --tolerance {params.tolerance} {params.tables} {params.meshes}"
+        " -o {output.table} --conclusions {output.conclusions} --json {output.verdicts} > {log} 2>&1"
 
 
 ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of paper/make_energy_evidence.py
@@ -213,6 +250,8 @@ rule paper:
         table="paper/generated/table1.tex",
         variants="paper/generated/variants.tex",
         energy="paper/generated/energy_evidence.tex",
+        claims="paper/generated/claims.tex",
+        conclusions="paper/generated/conclusions.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
         how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk

@@ -14,9 +14,13 @@ manifest names (built by study/rules/report.smk):
 
 Figures are embedded as base64 PNG under a caption that says what they show (CAPTIONS, by the
 figure's kind), for which run, and the script that drew it; wide figures (more than twice as wide as
-high) take the page width, others half of it. The Table 1 block appears only for sweeps that compare
-with the published Table 1 (product `comparison`). Wide tables scroll on a wide screen and wrap in
-print and on a narrow screen (under 60em: the same rules as print).
+high) take the page width, others half of it; a figure whose PNG carries its legend's counts (the
+PNG's Description, JSON with a "legend" key: figures/phase_diagram.py) gets them as its `data-legend`
+attribute, and each Table-1 row its cell and whether the category matches, so that a test can set
+the two side by side. The Table 1 block appears only for sweeps that compare with the published
+Table 1 (product `comparison`); its row colours are explained above it. The runs table has a fixed
+layout at the page width (long run names wrap), so that it needs no horizontal scroll; other wide
+tables scroll on a wide screen and wrap in print and on a narrow screen (under 60em).
 Nothing is computed here: deviations, signs, regimes, categories and the celerity's window
 sensitivity are the aggregate's columns or metrics.json keys, wall time and memory Snakemake's
 benchmark of `simulate`; categories read as analysis.regime.CATEGORY_LABELS says.
@@ -74,9 +78,12 @@ figure { display: inline-block; margin: 0.5em 0; width: 49%; vertical-align: top
 figure.wide { width: 100%; }
 figure img { max-width: 100%; } figcaption { font-size: 0.85em; color: #444; }
 div.scroll { max-width: 100%; overflow-x: auto; }
+table.runs { table-layout: fixed; width: 100%; font-size: 0.8em; }
+table.runs th, table.runs td { overflow-wrap: break-word; white-space: normal; padding: 0.1em 0.3em; }
+table.runs th:first-child, table.runs td:first-child { width: 17%; overflow-wrap: anywhere; }
+span.key { padding: 0 0.4em; border: 1px solid #ccc; }
 @media print, (max-width: 60em) { div.scroll { overflow: visible; } table { font-size: 0.7em; }
-  th, td { white-space: normal; padding: 0.1em 0.25em; } td.l { overflow-wrap: anywhere; }
-  table.runs { table-layout: fixed; width: 100%; } table.runs th, table.runs td { overflow-wrap: anywhere; } }
+  th, td { white-space: normal; padding: 0.1em 0.25em; } td.l { overflow-wrap: anywhere; } }
 pre { background: #f7f7f7; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
 """
 
@@ -125,6 +132,22 @@ def png_size(path: str) -> tuple[int, int]:
     return int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
 
 
+def png_description(path: str) -> str | None:
+    """The text of a PNG's Description chunk (tEXt), if it has one."""
+    data = Path(path).read_bytes()
+    at = 8  # after the signature: length, type, data, CRC per chunk
+    while at + 8 <= len(data):
+        length, kind = int.from_bytes(data[at:at + 4], "big"), data[at + 4:at + 8]
+        if kind == b"tEXt":
+            key, _, text = data[at + 8:at + 8 + length].partition(b"\0")
+            if key == b"Description":
+                return text.decode("latin-1")
+        if kind == b"IEND":
+            break
+        at += 12 + length
+    return None
+
+
 def celerity_text(values: dict) -> str:
     """c_p (m/s) +- its change with the measurement window, and 'unsteady' when the fronts were."""
     c = values.get("celerity")
@@ -159,7 +182,11 @@ def table_html(rows: list[dict], tolerance: float) -> str:
            f"reproduced (within {tolerance:.0%} with the published sign, regime and outcome), {within} within "
            f"{tolerance:.0%} whatever their outcome, {wrong} with the wrong sign, {other} with another "
            "outcome than the published opening wave.</p>",
-           "<div class=scroll><table><tr><th>nu</th><th>f</th><th>published c_p (m/s)</th>"
+           "<p>Row colours: <span class='key' style='background:#fde0dc'>red</span> the sign or the "
+           "outcome differs from the published one, or no celerity was measured; "
+           "<span class='key' style='background:#fff4cc'>yellow</span> the published sign and outcome but "
+           f"not reproduced (deviation over {tolerance:.0%} or another regime); no colour: reproduced.</p>",
+           "<div class=scroll><table class=table1><tr><th>nu</th><th>f</th><th>published c_p (m/s)</th>"
            "<th>regenerated c_p (m/s) &plusmn; window</th><th>deviation</th><th class=l>regime (published)</th>"
            "<th class=l>category (published)</th><th>min T/N</th></tr>"]
     for r in rows:
@@ -171,7 +198,9 @@ def table_html(rows: list[dict], tolerance: float) -> str:
         category = html.escape(category_label(r.get("category") or ""))
         if r.get("category_match") == "false":
             category += f" ({html.escape(category_label(r.get('published_category') or ''))})"
-        out.append(f"<tr class='{css}'><td>{fmt(r['nu'])}</td><td>{fmt(r['f'])}</td>"
+        match = "true" if r.get("category_match") == "true" else "false"
+        out.append(f"<tr class='{css}' data-cell='{fmt(r['nu'])},{fmt(r['f'])}' data-category-match='{match}' "
+                   f"data-published='{fmt(_number(r['published']))}'><td>{fmt(r['nu'])}</td><td>{fmt(r['f'])}</td>"
                    f"<td>{fmt(_number(r['published']))}</td><td>{celerity_text(r)}</td>"
                    f"<td>{dev}</td><td class=l>{fmt(r.get('regime'))} ({fmt(r.get('published_regime'))})</td>"
                    f"<td class=l>{category}</td><td>{fmt(_number(r.get('min_T_over_N', '')), 3)}</td></tr>")
@@ -195,9 +224,23 @@ def figure_html(path: str) -> str:
                            "spacetime" if stem.startswith("spacetime_") else stem) + ".py"
     width, height = png_size(path)
     css = " class=wide" if width > 2 * height else ""
+    try:
+        legend = json.loads(png_description(path) or "{}").get("legend")
+    except ValueError:
+        legend = None
+    if legend is not None:
+        css += f" data-legend='{html.escape(json.dumps(legend), quote=True)}'"
     return (f"<figure{css}><img alt='{html.escape(stem)}' src='data:image/png;base64,{data}'>"
             f"<figcaption>{html.escape(figure_caption(stem))} Drawn by {script} "
             f"(<code>{html.escape(path)}</code>).</figcaption></figure>")
+
+
+def stop_after_opening(metrics: dict, time_config: dict) -> str:
+    """The configured stop after the first opening, for a run that opened; a run that never opened
+    ran to its end time, so the setting did not act."""
+    if metrics.get("opening") is not True:
+        return "never opened"
+    return fmt(time_config.get("stop_after_opening"))
 
 
 def runs_html(runs: list[dict]) -> str:
@@ -215,12 +258,13 @@ def runs_html(runs: list[dict]) -> str:
         values = {**metrics, "category": category_label(metrics["category"]) if "category" in metrics else None}
         cells = "".join(f"<td{' class=l' if k in TEXT_KEYS else ''}>{fmt(values.get(k))}</td>" for k in RUN_KEYS)
         out.append(f"<tr><td class=l>{html.escape(run['name'])}</td><td>{celerity_text(metrics)}</td>{cells}<td>{fmt(config.get('t_end'), 6)}</td>"
-                   f"<td>{fmt(config.get('stop_after_opening'))}</td><td>{fmt(wall)}</td>"
+                   f"<td>{stop_after_opening(metrics, config)}</td><td>{fmt(wall)}</td>"
                    f"<td>{fmt(_number(bench.get('max_rss', '')))}</td></tr>")
     out.append("</table></div>")
     out.append("<p>Energy residual: the energy balance error relative to the energy that flowed through "
                "the run; with hht_alpha &gt; 0 it is the algorithmic dissipation of HHT (measured term by "
-               "term against the residual in paper/reproduction.pdf, &ldquo;What the energy residual is&rdquo;; "
+               "term against the residual in the reproduction report, section &ldquo;What the energy residual "
+               "is&rdquo;, which <code>snakemake -c2 all</code> builds as paper/reproduction.pdf; "
                "docs/energy-balance.md). "
                "Wall time and memory: Snakemake's benchmark of the solver.</p>")
     out.insert(0, f"<p>{len(runs)} runs, {total:.0f} s of solver wall time in all.</p>")

@@ -16,7 +16,7 @@ def drawn(monkeypatch):
     """{script: figure} of the figures drawn in the test (captured instead of closed)."""
     figures = {}
 
-    def keep(fig, prefix):
+    def keep(fig, prefix, **_):
         figures[str(prefix).rsplit("/", 1)[-1]] = fig
 
     monkeypatch.setattr(_style, "save", keep)

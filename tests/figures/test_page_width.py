@@ -88,7 +88,15 @@ def build_from_committed(tmp_path):
         "--runs", table("study", "all_metrics.csv"), "--grid", table(spec["grid"], "all_metrics.csv"),
         "--table1", table("study", "table1.csv"), "--reference-cell", CONFIG["defaults"]["nu"],
         CONFIG["defaults"]["f"], *sweeps, "-o", gen / "numbers.tex")
-    run(sys.executable, PAPER / "make_table1.py", table("study", "table1.csv"), "-o", gen / "table1.tex")
+    meshes = [f"{label}={table(sweep, 'table1.csv')}" for label, sweep in spec.get("meshes", {}).items()]
+    run(sys.executable, PAPER / "make_table1.py", table("study", "table1.csv"),
+        *[f"--other-mesh={m}" for m in meshes], "-o", gen / "table1.tex")
+    run(sys.executable, PAPER / "make_claims.py", "--claims", ROOT / "study/reference/claims.json",
+        "--tolerance", CONFIG["reference"]["tolerance"],
+        *[f"--table={name}={table(sweep, 'table1.csv' if name == 'table1' else 'all_metrics.csv')}"
+          for name, sweep in CONFIG["paper"]["claims"].items()],
+        *[f"--mesh-table={m}" for m in meshes], "-o", gen / "claims.tex", "--conclusions", gen / "conclusions.tex",
+        "--json", gen / "claims.json")
     run(sys.executable, PAPER / "make_variants.py", *[f"{label}={table(sweep, 'summary.json')}" for label, sweep
                                                      in CONFIG["paper"]["variants"].items()], "-o", gen / "variants.tex")
     for name, spec in CONFIG["paper"]["tables"].items():

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 import synthetic
-from figure_support import PAPER, command
+from figure_support import PAPER, ROOT, command
 from how_sure_inputs import write_generated, write_tables
 from how_sure_limits_inputs import write_generated_limits, write_limits
 
@@ -174,6 +174,11 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
         else:
             args = ["make_sweep_table.py", f"all={data / 'all_metrics.csv'}", "--columns", *table["columns"]]
         assert command(PAPER / args[0], *args[1:], "-o", gen / f"{name}.tex").returncode == 0, name
+    # The verdicts: the synthetic grid and Table 1; every other claim says its table was not built.
+    assert command(PAPER / "make_claims.py", "--claims", ROOT / "study/reference/claims.json", "--tolerance", "0.05",
+                   f"--table=table1={data / 'table1.csv'}", f"--table=grid={data / 'all_metrics.csv'}",
+                   "-o", gen / "claims.tex", "--conclusions", gen / "conclusions.tex",
+                   "--json", gen / "claims.json").returncode == 0
     write_generated(write_tables(tmp_path), gen)  # paper/how_sure.tex's inputs (tests/figures/how_sure_inputs.py)
     write_generated_limits(write_limits(tmp_path / "limits"), gen)  # its limits subsections (how_sure_limits_inputs.py)
     build(paper)

@@ -16,7 +16,7 @@ import celerity_vs_nu
 def drawn(monkeypatch):
     """{name: figure} of the figures drawn in the test (captured instead of saved)."""
     figures = {}
-    monkeypatch.setattr(_style, "save", lambda fig, prefix: figures.__setitem__(str(prefix).rsplit("/", 1)[-1], fig))
+    monkeypatch.setattr(_style, "save", lambda fig, prefix, **_: figures.__setitem__(str(prefix).rsplit("/", 1)[-1], fig))
     return figures
 
 
@@ -48,6 +48,34 @@ def test_phase_diagram_marks_every_published_cell_by_direction(data, drawn, tmp_
     assert f"published: opening wave in the sliding direction ({len(forward)})" in labels
     assert f"published: opening wave against the sliding direction ({len(backward)})" in labels
     assert any(label.startswith("our category differs") and f"({len(differs)})" in label for label in labels)
+
+
+def test_phase_diagram_of_a_few_runs_marks_and_counts_only_the_published_cells_run(data, drawn, tmp_path):
+    """The quick study runs 4 points: the other published cells have no run, and say nothing."""
+    rows = table1(data / "all_metrics.csv")
+    published = table1(data / "table1.csv")
+    ran = [r for r in published if r["category_match"].lower() != "true"][:1] + \
+        [r for r in published if r["category_match"].lower() == "true"][:2]
+    keep = {(float(r["nu"]), float(r["f"])) for r in ran}
+    subset = tmp_path / "few.csv"
+    with open(subset, "w", newline="") as stream:
+        writer = csv.DictWriter(stream, list(rows[0]))
+        writer.writeheader()
+        writer.writerows(r for r in rows if (float(r["nu"]), float(r["f"])) in keep)
+    assert call("phase_diagram", subset, "--flutter", data / "flutter.txt", "--published", data / "table1.csv",
+                "--where", *GRID, "--out", tmp_path / "few") == 0
+    ax = drawn["few"].axes[0]
+    arrows = points_with_marker(ax, ">") + points_with_marker(ax, "<")
+    assert sorted(arrows) == sorted((round(nu, 6), round(f, 6)) for nu, f in keep)
+    assert len(points_with_marker(ax, "$\\neq$")) == 1
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    differs = [label for label in labels if label.startswith("our category differs")]
+    assert differs and differs[0].endswith("(1)"), labels
+    # Ticked at every swept nu and at the tenths between them.
+    ticks = [round(t, 6) for t in ax.get_xticks()]
+    nus = {round(nu, 6) for nu, _ in keep}
+    assert nus <= set(ticks)
+    assert {t / 10 for t in range(5) if all(abs(t / 10 - nu) >= 0.04 for nu in nus)} <= set(ticks)
 
 
 def test_phase_diagram_without_published_has_no_overlay(data, drawn, tmp_path):

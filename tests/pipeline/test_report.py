@@ -5,6 +5,7 @@ tables scroll."""
 
 import base64
 import importlib.util
+import html
 import json
 import struct
 import zlib
@@ -23,13 +24,14 @@ TABLE = """nu,f,celerity,published,deviation_rel,regime,published_regime,sign_ma
 """
 
 
-def png(width, height):
-    """A blank RGB PNG of the given size."""
+def png(width, height, description=None):
+    """A blank RGB PNG of the given size, with a Description text chunk when given."""
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
     raw = b"".join(b"\0" + b"\xff" * 3 * width for _ in range(height))
+    text = chunk(b"tEXt", b"Description\0" + description.encode("latin-1")) if description else b""
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+            + text + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 
 
 def make_run(folder, metrics):
@@ -43,10 +45,11 @@ def make_run(folder, metrics):
 def test_report_page(tmp_path):
     (tmp_path / "table1.csv").write_text(TABLE)
     (tmp_path / "comparison.txt").write_text("compare: PASS\n")
-    (tmp_path / "phase_diagram.png").write_bytes(png(4, 3))
+    legend = {"published": {"published_forward": 1, "published_backward": 2, "differs": 1}}
+    (tmp_path / "phase_diagram.png").write_bytes(png(4, 3, json.dumps({"legend": legend})))
     (tmp_path / "convergence.png").write_bytes(png(30, 10))
     run = tmp_path / "nu0.20_f1.50"
-    make_run(run, {"category": "intersonic_opening_inversion", "celerity": 0.8488,
+    make_run(run, {"category": "intersonic_opening_inversion", "celerity": 0.8488, "opening": True,
                    "celerity_window_sensitivity": -0.065, "celerity_quality": "unsteady"})
     slow = tmp_path / "nu0.30_f0.50"
     make_run(slow, {"category": "no_slip", "celerity": None})
@@ -68,6 +71,12 @@ def test_report_page(tmp_path):
     assert page.count("0.8488 &plusmn; 0.055 (unsteady)") == 2
     assert "uniform sliding" in page and "no_slip" not in page
     assert "Categories of the runs in the (nu, f) plane" in page and "figures/phase_diagram.py" in page
-    assert "<figure class=wide>" in page and page.count("<figure>") == 1  # the 3:1 convergence plot is wide
-    assert page.count("<div class=scroll><table>") == 1 and page.count("<div class=scroll><table class=runs>") == 2
+    assert "<figure class=wide>" in page and page.count("<figure data-legend=") == 1  # the 3:1 convergence plot is wide
+    assert page.count("<div class=scroll><table class=table1>") == 1
+    assert page.count("<div class=scroll><table class=runs>") == 2
+    assert "Row colours:" in page  # the red and yellow rows are explained
+    assert "data-cell='0.45,0.9' data-category-match='false' data-published='-2.506'" in page
+    assert f"data-legend='{html.escape(json.dumps(legend), quote=True)}'" in page  # the PNG's legend counts
+    # The stop after opening is the run's setting only for a run that opened.
+    assert page.count("<td>580.9</td>") == 1 and page.count("<td>never opened</td>") == 1
     assert "stop_after_opening" in page and "3.71" in page and "slidewave 0.1.0 (commit abc123)" in page

@@ -1,5 +1,5 @@
 """study/run_length.py and study/resources.py against closed forms and our measurements
-(docs/physics-notes.md, README "Measured speed")."""
+(docs/physics-notes.md, docs/performance.md)."""
 
 import math
 
@@ -81,7 +81,7 @@ def test_step_count_does_not_depend_on_density():
 
 
 def test_cost_model_matches_the_measured_step_times():
-    # README "Measured speed": 0.140, 0.594, 4.50 ms per step at H/32, 64, 128; 4.64 ms at H/64, lambda = 6H.
+    # docs/performance.md: 0.140, 0.594, 4.50 ms per step at H/32, 64, 128; 4.64 ms at H/64, lambda = 6H.
     assert resources.ms_per_step(32, 2.0) == pytest.approx(0.140, rel=0.01)
     assert resources.ms_per_step(128, 2.0) == pytest.approx(4.50, rel=0.01)
     assert 0.594 < resources.ms_per_step(64, 2.0) < 1.35 * 0.594  # never under the measurement

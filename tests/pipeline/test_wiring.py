@@ -76,6 +76,8 @@ def test_all_builds_every_sweep_the_report_and_the_paper():
     assert counts["paper_table"] == 8
     # What the energy residual is: three small runs with the HHT dissipation booked, one generator.
     assert counts["energy_evidence_run"] == 3 and counts["paper_energy_evidence"] == 1
+    # The verdict on each claim and the Conclusions, from sweeps the paper builds anyway (no extra run).
+    assert counts["paper_claims"] == 1
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
     # The ensemble at H/64 and the finer one (its summary only: paper.envelope.finer_ensemble).
     assert counts["ensemble_table"] == 2 and counts["fig_phase_diagram_ensemble"] == 1
