@@ -46,19 +46,48 @@ Recorder::Recorder(const LayerModel& m, const EnergyLedger& ledger, const Preloa
   record_.opening_threshold = opening_threshold_;
 }
 
+RowSource Recorder::layer_source(const LoopState& loop) const {
+  return RowSource{loop, loop.energy, ledger_.kinetic(loop.dynamics), ledger_.elastic(loop.dynamics), model_.mesh.n_x};
+}
+
+int Recorder::source_dof(const RowSource& source, int node, int c) const {
+  const int n_x = model_.mesh.n_x, j = node / n_x, i = node % n_x;
+  return 2 * (j * source.n_x_source + i % source.n_x_source) + c;
+}
+
 void Recorder::record_start(LoopState& loop, int contact_iterations) {
   const Eigen::VectorXd& u = loop.dynamics.u;
   loop.recording = RecorderState{u.head(model_.n_contact_dofs), 0, -1};
-  record_global(0, loop, contact_iterations, 0);
-  record_interface(0, loop, u);
-  record_due_snapshots(0, loop);
+  const RowSource source = layer_source(loop);
+  record_global(0, source, contact_iterations, 0);
+  record_interface(0, source, u);
+  record_due_snapshots(0, source, loop.recording);
 }
 
 void Recorder::record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report) {
   const double t = loop.step * dt_;
-  record_global(t, loop, report.iterations, report.residual);
-  if (loop.step % model_.config.output.interface_stride == 0) record_interface(t, loop, u_previous);
-  record_due_snapshots(t, loop);
+  const RowSource source = layer_source(loop);
+  record_global(t, source, report.iterations, report.residual);
+  if (loop.step % model_.config.output.interface_stride == 0) record_interface(t, source, u_previous);
+  record_due_snapshots(t, source, loop.recording);
+}
+
+void Recorder::record_uniform_start(LoopState& column, const EnergySums& sums, int contact_iterations, double e_kin,
+                                    double e_el) {
+  column.recording = RecorderState{column.dynamics.u.head(2), 0, -1};
+  const RowSource source{column, sums, e_kin, e_el, 1};
+  record_global(0, source, contact_iterations, 0);
+  record_interface(0, source, column.dynamics.u);
+  record_due_snapshots(0, source, column.recording);
+}
+
+void Recorder::record_uniform_step(LoopState& column, const Eigen::VectorXd& u_previous, const EnergySums& sums,
+                                   double e_kin, double e_el) {
+  const double t = column.step * dt_;
+  const RowSource source{column, sums, e_kin, e_el, 1};
+  record_global(t, source, 0, 0);  // the stick steps are solved exactly: no sweep, no residual
+  if (column.step % model_.config.output.interface_stride == 0) record_interface(t, source, u_previous);
+  record_due_snapshots(t, source, column.recording);
 }
 
 bool Recorder::detect_first_opening(LoopState& loop) {
@@ -80,15 +109,15 @@ RunRecord Recorder::finish(const LoopState& loop, bool complete, const std::stri
   return std::move(record_);
 }
 
-void Recorder::record_global(double t, const LoopState& loop, int contact_iterations, double contact_residual) {
-  const Eigen::VectorXd& r = loop.dynamics.r;
+void Recorder::record_global(double t, const RowSource& source, int contact_iterations, double contact_residual) {
+  const Eigen::VectorXd& r = source.state.dynamics.r;
   double T = 0, N = 0;
   for (int k = 0; k < model_.mesh.n_contact(); ++k) {
-    T -= r(2 * k);
-    N += r(2 * k + 1);
+    T -= r(source_dof(source, k, 0));
+    N += r(source_dof(source, k, 1));
   }
-  const double e_kin = ledger_.kinetic(loop.dynamics), e_el = ledger_.elastic(loop.dynamics);
-  const EnergySums& e = loop.energy;
+  const double e_kin = source.e_kin, e_el = source.e_el;
+  const EnergySums& e = source.sums;
   auto& g = record_.global;
   g.t.push_back(t);
   g.T.push_back(T);
@@ -111,33 +140,34 @@ void Recorder::record_global(double t, const LoopState& loop, int contact_iterat
   g.contact_residual.push_back(contact_residual);
 }
 
-void Recorder::record_interface(double t, const LoopState& loop, const Eigen::VectorXd& u_previous) {
-  const Eigen::VectorXd &u = loop.dynamics.u, &r = loop.dynamics.r;
-  const Eigen::VectorXd& u_contact_start = loop.recording.u_contact_start;
+void Recorder::record_interface(double t, const RowSource& source, const Eigen::VectorXd& u_previous) {
+  const Eigen::VectorXd &u = source.state.dynamics.u, &r = source.state.dynamics.r;
+  const Eigen::VectorXd& u_contact_start = source.state.recording.u_contact_start;
   const double h = model_.d.h;
   auto& s = record_.interface;
   s.t.push_back(t);
   for (int k = 0; k < model_.mesh.n_contact(); ++k) {
-    s.slip_velocity.data.push_back((u(2 * k) - u_previous(2 * k)) / dt_);
-    s.slip.data.push_back(u(2 * k) - u_contact_start(2 * k));
-    s.opening.data.push_back(u(2 * k + 1));
-    s.normal_traction.data.push_back(r(2 * k + 1) / h);
-    s.tangential_traction.data.push_back(-r(2 * k) / h);
-    s.state.data.push_back(static_cast<std::int8_t>(loop.contact[k]));
+    const int x = source_dof(source, k, 0), y = source_dof(source, k, 1);
+    s.slip_velocity.data.push_back((u(x) - u_previous(x)) / dt_);
+    s.slip.data.push_back(u(x) - u_contact_start(x));
+    s.opening.data.push_back(u(y));
+    s.normal_traction.data.push_back(r(y) / h);
+    s.tangential_traction.data.push_back(-r(x) / h);
+    s.state.data.push_back(static_cast<std::int8_t>(source.state.contact[x / 2]));
   }
 }
 
-void Recorder::record_due_snapshots(double t, LoopState& loop) {
-  auto& next = loop.recording.next_snapshot;
+void Recorder::record_due_snapshots(double t, const RowSource& source, RecorderState& recording) {
+  auto& next = recording.next_snapshot;
   while (next < snapshot_times_.size() && t >= snapshot_times_[next] - 0.5 * dt_) {
     Snapshot snap{t, {}, {}};
-    const Eigen::VectorXd &u = loop.dynamics.u, &v = loop.dynamics.v;
+    const Eigen::VectorXd &u = source.state.dynamics.u, &v = source.state.dynamics.v;
     for (int j = 0; j <= model_.mesh.n_y; ++j)
       for (int i = 0; i <= model_.mesh.n_x; ++i) {  // i = n_x repeats i = 0 (see snapshot_mesh)
         const int node = model_.mesh.node(i, j);
         for (int c = 0; c < 2; ++c) {
-          snap.displacement.push_back(u(2 * node + c));
-          snap.velocity.push_back(v(2 * node + c));
+          snap.displacement.push_back(u(source_dof(source, node, c)));
+          snap.velocity.push_back(v(source_dof(source, node, c)));
         }
       }
     record_.snapshots.push_back(std::move(snap));

@@ -16,6 +16,7 @@
 #include "model/loop_state.hpp"
 #include "model/loop_state_arrays.hpp"
 #include "model/recorder.hpp"
+#include "model/uniform_stick.hpp"
 #include "time/hht_stepper.hpp"
 
 namespace slidewave {
@@ -67,6 +68,13 @@ class ProgressPacer {
   std::int64_t steps_since_report_ = 0;
 };
 
+/// Velocity of every DOF at the start of the dynamic stage: the top's u_x at V0, the rest at rest.
+Eigen::VectorXd top_velocity(const LayerModel& m) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(m.n_free + m.n_top);
+  for (int i = 0; i < m.mesh.n_x; ++i) v(m.n_free + 2 * i) = m.d.V0;
+  return v;
+}
+
 /// Steps to the first time at or after t_end.
 std::int64_t n_steps_to(double t_end, double dt) {
   const double n = std::ceil(t_end / dt - 1e-9);
@@ -74,29 +82,55 @@ std::int64_t n_steps_to(double t_end, double dt) {
   return static_cast<std::int64_t>(n);
 }
 
-/// State at t = 0 of the dynamic stage: the preload plus the seeded perturbation that breaks translation
-/// invariance (the normal DOFs of the contact nodes are not perturbed: no initial gap or penetration),
-/// the top moving at V0, the acceleration consistent with the preload reactions.
-LoopState initial_state(const LayerModel& m, const PreloadState& pre, const HHTStepper& stepper,
-                        const FrictionLaw& friction) {
+/// State at t = 0 of the dynamic stage, before the seed: the preload, the top moving at V0, the acceleration
+/// consistent with the preload reactions, the running sums at zero.
+LoopState start_state(const LayerModel& m, const PreloadState& pre, const HHTStepper& stepper,
+                      const FrictionLaw& friction, const EnergyLedger& ledger, const LinearSolver& M_ff) {
+  LoopState loop;
+  loop.t_end = m.config.time.t_end;
+  loop.dynamics = stepper.initial_state(pre.u, top_velocity(m), pre.r, M_ff);
+  loop.contact = pre.state;
+  loop.friction = friction.initial_state(pre.r);
+  loop.energy = ledger.start(loop.dynamics);
+  loop.recording.u_contact_start = loop.dynamics.u.head(m.n_contact_dofs);
+  return loop;
+}
+
+/// Adds the seeded perturbation that breaks translation invariance: a uniform random displacement of every
+/// free DOF but the contact nodes' normal ones (no gap, no penetration), amplitude relative to the preshear
+/// top displacement, from std::mt19937_64(seed). The acceleration changes by M_ff da = -(K du)_f, which
+/// keeps M a + K u - C^T r, and with it the HHT step's carried state, as it was; the seed's elastic energy
+/// is booked as energy given at the start, the slip reference moves with the seed (slip stays 0).
+void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& ledger, const LinearSolver& M_ff,
+              LoopState& loop) {
   const auto& c = m.config;
   const int n_f = m.n_free, n_c = m.n_contact_dofs;
-  Eigen::VectorXd u = pre.u, v = Eigen::VectorXd::Zero(n_f + m.n_top);
-  for (int i = 0; i < m.mesh.n_x; ++i) v(n_f + 2 * i) = m.d.V0;
+  Eigen::VectorXd du = Eigen::VectorXd::Zero(n_f + m.n_top);
   std::mt19937_64 generator(static_cast<std::uint64_t>(c.perturbation.seed));
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   const double amplitude = c.perturbation.amplitude * std::fabs(pre.u_x_top);
   for (int dof = 0; dof < n_f; ++dof) {
     const double xi = uniform(generator);
     if (dof < n_c && dof % 2 == 1) continue;
-    u(dof) += amplitude * xi;
+    du(dof) = amplitude * xi;
   }
-  LoopState loop;
-  loop.t_end = c.time.t_end;
-  loop.dynamics = stepper.initial_state(u, v, pre.r, *m.factorize(m.M_ff));
-  loop.contact = pre.state;
-  loop.friction = friction.initial_state(pre.r);
-  return loop;
+  HHTState& s = loop.dynamics;
+  const double elastic_before = ledger.elastic(s);
+  const Eigen::VectorXd K_du = m.K * du;
+  s.u += du;
+  s.Ku += K_du;
+  s.Mu_f += m.M_ff_rows * du.head(n_f);
+  s.Ma_f -= K_du.head(n_f);
+  s.acc.head(n_f) += M_ff.solve(Eigen::VectorXd(-K_du.head(n_f)));
+  EnergySums& e = loop.energy;
+  e.energy_start += ledger.elastic(s) - elastic_before;
+  e.F_top = s.Ku.tail(m.n_top) + m.M_top_rows * s.acc;
+  if (e.hht.on()) {  // the shift term s = M a + K u - C^T r (free rows) is unchanged
+    e.hht.acc_f = s.acc.head(n_f);
+    e.hht.Ma_f = s.Ma_f;
+    e.hht.Ku_f = s.Ku.head(n_f);
+  }
+  loop.recording.u_contact_start += du.head(n_c);
 }
 
 /// time.stop_after_opening: once the interface has opened at t, the run ends that long after.
@@ -154,34 +188,62 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
 
-  // 3. Initial state and the output rows at t = 0; or, continuing a run, the state of its checkpoint
-  //    (whose rows are already in the output).
-  LoopState loop = initial_state(m, pre, stepper, *friction);
-  const EnergyLedger ledger(m, loop.dynamics.v.tail(m.n_top));
-  loop.energy = ledger.start(loop.dynamics);
+  // 3. The state at t = 0, before the seed; or, continuing a run, the state of its checkpoint (whose rows
+  //    are already in the output).
+  const auto M_ff = m.factorize(m.M_ff);
+  const EnergyLedger ledger(m, top_velocity(m).tail(m.n_top));
+  LoopState loop = start_state(m, pre, stepper, *friction, ledger, *M_ff);
   Recorder recorder(m, ledger, pre);
-  const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
-  if (const StateArrays* start = observer ? observer->start_state() : nullptr) {
-    loop.recording.u_contact_start.resize(n_c);
-    restore_from_arrays(*start, loop);
-  } else {
-    recorder.record_start(loop, pre.contact_iterations);
+  UniformStick stick(m, pre);
+  const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
+  const std::int64_t n_handover = stick.handover_step(n_steps_max, stop_requested);
+  const StateArrays* resumed = observer ? observer->start_state() : nullptr;
+  if (resumed) restore_from_arrays(*resumed, loop);
+  bool uniform = loop.step < n_handover;  // the stick stage: the layer moves as its column (model/uniform_stick.hpp)
+  const RunObserver::Capture capture = [&] {
+    if (!uniform) return to_arrays(loop);
+    LoopState layer = loop;
+    stick.expand_into(layer);
+    return to_arrays(layer);
+  };
+  if (resumed && uniform) stick.resume_from(loop);
+  if (!resumed) {
+    if (uniform) {
+      stick.start(loop, recorder, pre.contact_iterations);
+    } else {
+      add_seed(m, pre, ledger, *M_ff, loop);
+      recorder.record_start(loop, pre.contact_iterations);
+    }
     if (observer) observer->after_step(recorder.rows(), capture);
   }
   watch.lap(&StepProfile::setup);
+  ProgressPacer pacer(progress);
+  std::string failure;  // why the run stopped early, if it did
 
-  // 4. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
+  // 4. The stick stage on the column, up to the handover: then the column at every mesh column, and the seed.
+  while (uniform && loop.step < n_handover) {
+    if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
+    if (!stick.step(loop, recorder)) throw std::logic_error("the column slipped before the handover step");
+    watch.lap(&StepProfile::stick_stage);
+    watch.count(loop.step, 0);
+    pacer.step_done(loop.step * hht.dt, stick.column(), recorder);
+    if (observer) observer->after_step(recorder.rows(), capture);
+  }
+  if (uniform && failure.empty()) {
+    stick.expand_into(loop);
+    uniform = false;
+    if (loop.step < n_steps_max) add_seed(m, pre, ledger, *M_ff, loop);
+  }
+
+  // 5. The layer's time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
   ContactStep contact(n_c, W);
-  ProgressPacer pacer(progress);
-  const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
-  std::string failure;  // why the run stopped early, if it did
   // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
   const auto top_after = [&](std::int64_t step) {
     return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
   };
   Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
-  while (loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
+  while (failure.empty() && loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
     if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
     const double t = (loop.step + 1) * hht.dt;
     // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).

@@ -4,7 +4,8 @@
 namespace slidewave {
 
 struct StepProfile {
-  double setup = 0;        ///< preload stages, K_eff factorization, Delassus operator
+  double setup = 0;        ///< preload stages, K_eff factorization, Delassus operator, finding the handover
+  double stick_stage = 0;  ///< the stick stage on the x-uniform column (model/uniform_stick.hpp)
   double predictor = 0;    ///< right-hand side of the free solve (~0: done by the previous correction)
   double free_solve = 0;   ///< K_eff u_free = rhs
   double contact = 0;      ///< Gauss–Seidel on W

@@ -168,14 +168,19 @@ void check_supersonic_backward(int elements_per_H) {
   EXPECT_GT(std::fabs(m.celerity), m.c_l) << "supersonic";
 }
 
+// Slip without opening, checked at f = 0.7, inside the no-opening region: f = 0.8 lies near its edge on
+// the coarse meshes, where single seeds open by a fraction of a millimetre (H/32: seed 3 by 2.3e-5 m when
+// the seed was carried from t = 0; seed 1 by 7e-4 m with the seed of the stick stage; none of seeds 1-3
+// at H/64), so a check there tests a seed, not the regime.
 void check_no_opening(int elements_per_H) {
-  const Measurements m = run_case(0.2, 0.8, elements_per_H, onset(0.2, 0.8) + 1000.0);  // onset ~413 s
-  report("nu=0.2 f=0.8", elements_per_H, m);
+  const double f = 0.7;
+  const Measurements m = run_case(0.2, f, elements_per_H, onset(0.2, f) + 1000.0);  // onset ~360 s
+  report("nu=0.2 f=0.7", elements_per_H, m);
   ASSERT_TRUE(m.complete);
   EXPECT_GT(m.n_slip_samples, 0) << "the interface must slip";
   EXPECT_GT(m.celerity, 0) << "pulses run in +x";
-  EXPECT_NEAR(m.max_T_over_N, 0.8, 1e-3) << "T/N reaches f";
-  EXPECT_GT(m.max_T_over_N - m.min_T_over_N, 0.05 * 0.8) << "frictional drop";
+  EXPECT_NEAR(m.max_T_over_N, f, 1e-3) << "T/N reaches f";
+  EXPECT_GT(m.max_T_over_N - m.min_T_over_N, 0.05 * f) << "frictional drop";
   EXPECT_GT(m.min_T_over_N, 0) << "no inversion without opening";
   EXPECT_LT(m.max_opening, 1e-9) << "no opening";
 }
@@ -199,10 +204,10 @@ TEST(Smoke, PrakashCliftonRunsThroughGrazingH64) {
   EXPECT_LE(*std::max_element(rec.global.contact_iterations.begin(), rec.global.contact_iterations.end()), 100);
 }
 
-TEST(Smoke, Nu02F08SlipWithoutOpeningH16) { check_no_opening(16); }
-TEST(Smoke, Nu02F08SlipWithoutOpeningH32) { check_no_opening(32); }
-TEST(Smoke, Nu02F08SlipWithoutOpeningH64) { check_no_opening(64); }
-TEST(Smoke, Nu02F08SlipWithoutOpeningH128) { check_no_opening(128); }
+TEST(Smoke, Nu02F07SlipWithoutOpeningH16) { check_no_opening(16); }
+TEST(Smoke, Nu02F07SlipWithoutOpeningH32) { check_no_opening(32); }
+TEST(Smoke, Nu02F07SlipWithoutOpeningH64) { check_no_opening(64); }
+TEST(Smoke, Nu02F07SlipWithoutOpeningH128) { check_no_opening(128); }
 TEST(Smoke, Nu045F10SupersonicPulsesRunBackwardH32) { check_supersonic_backward(32); }
 TEST(Smoke, Nu045F10SupersonicPulsesRunBackwardH64) { check_supersonic_backward(64); }
 
