@@ -307,14 +307,15 @@ def bless(names):
         changed.append(name)
     new = {"format": FORMAT, "blessed_with": version(), "excluded": EXCLUDED, "normalized": NORMALIZED,
            "runs": dict(sorted(runs.items()))}
+    if not changed and {**old, "blessed_with": None} == {**new, "blessed_with": None}:
+        print(f"no result moved: {DIGESTS.relative_to(REPO)} left as it is")
+        return 0
     DIGESTS.write_text(dumps(new))
     print(f"wrote {DIGESTS.relative_to(REPO)} ({new['blessed_with']})")
     if changed:
         print(f"results moved in: {', '.join(changed)}.\n"
               "REMINDER: the commit that re-blesses must say why the results moved (what changed in the solver "
               "and why that is intended).")
-    else:
-        print("no result moved.")
     return 0
 
 
