@@ -5,6 +5,7 @@ datasets that differ and how far they moved. Re-bless with scripts/bless_golden.
 
 Runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN) in temporary folders, ~10 s in all."""
 
+import re
 import signal
 import subprocess
 import sys
@@ -105,5 +106,6 @@ def test_interrupted_and_resumed_run_gives_the_golden_digests(tmp_path):
         pytest.skip("every run finished before the signal")
     assert "interrupted" in stderr, stderr
     assert (tmp_path / f"{RESUMED}.checkpoint.h5").exists()
+    step = re.search(r"at step (\d+)", stderr)
     resumed = golden.run_config(RESUMED, tmp_path, "--resume")
-    assert_golden(RESUMED, resumed, " (interrupted, resumed)")
+    assert_golden(RESUMED, resumed, f" (interrupted at step {step.group(1) if step else '?'}, resumed)")
