@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # README command 2: set up, build, and run every test of the default run: C++ GoogleTest through CTest
-# (without the `long` label), the Python tests of analysis, figures, pipeline and faults, the pipeline
-# wiring tests again from a copy in a folder named `slidewave` (tests must not depend on where the
-# checkout lives: `git clone` names it so), then the reference check of the regenerated Table 1 (H/64)
-# against the published values (study/reference/ratchet.json).
+# (without the `long` label), the Python tests of analysis, figures, pipeline, faults and the golden
+# regression (tests/golden), the pipeline wiring tests again from a copy in a folder named `slidewave`
+# (tests must not depend on where the checkout lives: `git clone` names it so), then the reference
+# check of the regenerated Table 1 (H/64) against the published values (study/reference/ratchet.json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PYTHON=${SLIDEWAVE_PYTHON:-/usr/bin/python3}
@@ -11,7 +11,7 @@ export USER=${USER:-$(id -un)}  # snakemake reads it
 bash scripts/setup.sh --latex --test
 bash scripts/build.sh
 ctest --test-dir build -LE long --output-on-failure -j2
-"$PYTHON" -m pytest -q tests/analysis tests/figures tests/pipeline tests/faults tests/config tests/paraview
+"$PYTHON" -m pytest -q tests/analysis tests/figures tests/pipeline tests/faults tests/config tests/paraview tests/golden
 copy="$(mktemp -d)/slidewave"
 mkdir "$copy"
 git ls-files -z --cached --others --exclude-standard | xargs -0 cp --parents -t "$copy"
