@@ -229,6 +229,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     pacer.step_done(loop.step * hht.dt, stick.column(), recorder);
     if (observer) observer->after_step(recorder.rows(), capture);
   }
+  if (profile) profile->stick_steps = loop.step;
   if (uniform && failure.empty()) {
     stick.expand_into(loop);
     uniform = false;

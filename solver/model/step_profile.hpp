@@ -12,6 +12,7 @@ struct StepProfile {
   double correction = 0;   ///< u(n+1) from the contact forces, Newmark update, K u(n+1), mass products, next predictor
   double diagnostics = 0;  ///< energy ledger, friction memory, output rows
   std::int64_t steps = 0;
+  std::int64_t stick_steps = 0;  ///< steps of the stick stage (the rest are the layer's)
   long long contact_sweeps = 0;
 };
 
