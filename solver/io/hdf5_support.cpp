@@ -38,8 +38,10 @@ std::string last_error_reason() {
   ReasonSearch search;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, visit_error, &search);
   if (!search.os_reason.empty()) return search.os_reason;
-  if (errno != 0) return std::strerror(errno);
-  return search.innermost.empty() ? "HDF5 error" : "HDF5: " + search.innermost;
+  // errno only when HDF5 recorded nothing: after an HDF5 failure of its own (a Fletcher32 checksum
+  // mismatch) errno is whatever an earlier call left ("No such file or directory").
+  if (!search.innermost.empty()) return "HDF5: " + search.innermost;
+  return errno != 0 ? std::strerror(errno) : "HDF5 error";
 }
 
 herr_t check(herr_t status, const std::string& file, const std::string& what) {

@@ -25,6 +25,7 @@ void write_run_header(hid_t file, const std::string& path, const RunConfig& conf
   write_string_attribute(file, "slidewave_version", kVersion, path);
   write_string_attribute(file, "git_commit", kGitCommit, path);
   write_string_attribute(file, "call", provenance.call, path);
+  write_string_attribute(file, "run_id", provenance.run_id, path);
   write_string_attribute(file, "created_utc", utc_now(), path);
   write_string_attribute(file, "config", config.to_json().dump(), path);
   const Handle setup = group_create(file, "setup", path);

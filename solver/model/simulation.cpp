@@ -164,6 +164,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   loop.energy = ledger.start(loop.dynamics);
   Recorder recorder(m, ledger, pre);
   const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
+  if (observer) observer->setup_done();
   if (const StateArrays* start = observer ? observer->start_state() : nullptr) {
     loop.recording.u_contact_start.resize(n_c);
     restore_from_arrays(*start, loop);
