@@ -147,7 +147,9 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
   h5::silence_errors();
   const std::string temporary = temporary_path_for(path, checkpoint.run_id);
   errno = 0;
-  const hid_t id = H5Fcreate(temporary.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT);
+  // The root attribute config holds the resolved configuration: any size.
+  const hid_t id = H5Fcreate(temporary.c_str(), H5F_ACC_EXCL, h5::large_attribute_properties(H5P_FILE_CREATE),
+                             h5::large_attribute_access());
   if (id < 0) throw IoError("cannot create " + temporary + ": " + h5::last_error_reason());
   Handle file(id, H5Fclose);
   try {

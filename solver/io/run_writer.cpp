@@ -140,7 +140,9 @@ RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Pr
     for (const auto& c : kHhtColumns) global_columns_.push_back(&c);
   h5::silence_errors();
   errno = 0;
-  const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The root attribute config and /setup/config_input hold the configuration: any size.
+  const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, h5::large_attribute_properties(H5P_FILE_CREATE),
+                               h5::large_attribute_access());
   if (file < 0) throw IoError("cannot create " + path_ + ": " + h5::last_error_reason());
   files_->file = Handle(file, H5Fclose);
   try {
