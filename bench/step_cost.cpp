@@ -77,6 +77,11 @@ double peak_rss_mb() {
 class TimedObserver : public slidewave::RunObserver {
  public:
   explicit TimedObserver(slidewave::RunObserver& inner) : inner_(inner) {}
+  void setup_done() override {
+    const auto start = std::chrono::steady_clock::now();
+    inner_.setup_done();  // the session creates its files here
+    seconds += seconds_since(start);
+  }
   void after_step(slidewave::RunRecord& record, const Capture& capture) override {
     const auto start = std::chrono::steady_clock::now();
     inner_.after_step(record, capture);

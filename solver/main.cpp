@@ -8,10 +8,12 @@
 //   0 complete (end_reason t_end or stop_after_opening): RUN.h5 written, complete = 1;
 //   1 contact failure (contact_not_converged): RUN.h5 written with complete = 0;
 //   2 bad input (config key or value, CLI usage, step count over time.max_steps, unusable output
-//     path): nothing written;
+//     path, a mesh whose memory estimate exceeds the available memory): nothing written;
 //   3 interrupted (SIGINT/SIGTERM): RUN.h5 neither created nor touched, what was computed is in
 //     RUN.partial.h5 (complete = 0, end_reason interrupted), RUN.checkpoint.h5 continues it (--resume);
-//   2 also: --resume with a checkpoint of another configuration or build (nothing changed);
+//     during the setup, before any file is created: at once, nothing written;
+//   2 also: --resume with a checkpoint of another configuration or build (nothing changed), and an
+//     output another run is writing (it holds RUN.h5.lock; nothing changed);
 //   4 I/O or internal error (unwritable file, HDF5 failure, ...): the message names the cause.
 #include <CLI/CLI.hpp>
 #include <atomic>
@@ -22,11 +24,15 @@
 #include "config/config_keys.hpp"
 #include "config/run_config.hpp"
 #include "git_version.hpp"
+#include "io/output_lock.hpp"
 #include "io/output_path.hpp"
 #include "io/progress.hpp"
+#include "io/available_memory.hpp"
 #include "io/hdf5_support.hpp"
 #include "io/run_session.hpp"
+#include "io/run_signals.hpp"
 #include "model/layer_model.hpp"
+#include "model/memory_estimate.hpp"
 #include "model/simulation.hpp"
 
 // Thread counts of the BLAS and OpenMP under CHOLMOD, set when those libraries are linked (weak symbols:
@@ -38,9 +44,6 @@ extern "C" void omp_set_num_threads(int) __attribute__((weak));
 namespace {
 
 enum ExitCode { kComplete = 0, kContactFailure = 1, kBadInput = 2, kInterrupted = 3, kInternalError = 4 };
-
-std::atomic<bool> g_stop{false};
-void on_signal(int) { g_stop = true; }
 
 }  // namespace
 
@@ -91,12 +94,15 @@ int main(int argc, char** argv) {
     std::cerr << "slidewave: " << config_path << ": " << e.what();
     return kBadInput;
   }
+  const MemoryEstimate memory = estimate_memory(config);
   if (check->parsed()) {
     std::cout << config.to_json().dump(2) << "\n";
+    std::cerr << "slidewave: memory estimate " << memory.describe() << "\n";
     return kComplete;
   }
 
-  // 3. Check the output before any work: a run must not end in "cannot write", nor overwrite its input.
+  // 3. Check the output before any work: a run must not end in "cannot write", nor write or remove its
+  //    input (every file it writes, removes or locks is compared with it).
   try {
     check_output_path(output_path, {config_path});
   } catch (const OutputPathError& e) {
@@ -104,29 +110,56 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
-  // 4. Build the model and run the three stages. Progress on a closed pipe must fail as EPIPE (and be
-  //    silenced), not kill the run with SIGPIPE.
-  if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
-  if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  // 4. Refuse a mesh that cannot fit in memory (exit 2, nothing written) before its setup would grow
+  //    into it for minutes and end in std::bad_alloc or the OOM killer. From here on, stderr on a closed
+  //    pipe must fail as EPIPE (and be silenced), not kill the run with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
+  const AvailableMemory available = available_memory();
+  std::cerr << "slidewave: memory estimate " << memory.describe() << "; available " << bytes_text(available.bytes)
+            << " (" << available.source << ")\n";
+  if (memory.total() > available.bytes) {
+    std::cerr << "slidewave: " << config_path << ": the run needs about " << bytes_text(memory.total())
+              << ", more than the " << bytes_text(available.bytes) << " available (" << available.source
+              << "); use a coarser mesh (mesh.elements_per_H) or a shorter period (geometry.lambda_over_H)\n";
+    return kBadInput;
+  }
+
+  // 5. Claim the output before any file is created or truncated: a second run into it is refused. What
+  //    a killed earlier run left under its own temporary names (its run id is in the lock file) goes.
   std::string call;
   for (int i = 0; i < argc; ++i) call += (i ? " " : "") + std::string(argv[i]);
+  const Provenance provenance{call, config_input};
+  std::unique_ptr<OutputLock> lock;
+  try {
+    lock = std::make_unique<OutputLock>(output_path, provenance.run_id, call);
+    remove_temporaries_of(output_path, lock->previous_run_id());
+  } catch (const OutputLocked& e) {
+    std::cerr << "slidewave: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const IoError& e) {
+    std::cerr << "slidewave: error: " << e.what() << "\n";
+    return kInternalError;
+  }
+
+  // 6. Build the model and run the three stages.
+  if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
+  if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
+  const std::atomic<bool>* stop = install_stop_handlers(kInterrupted, lock_path_for(output_path));
   std::unique_ptr<RunSession> session;
   try {
-    // The output is streamed to RUN.partial.h5 and put in place at the end (io/run_session.hpp);
-    // with --resume a checkpoint of this configuration and build is continued.
-    session = std::make_unique<RunSession>(output_path, config, Provenance{call, config_input}, resume, std::cerr);
+    // The output is streamed to RUN.partial.h5, created once the setup is done, and put in place at the
+    // end (io/run_session.hpp); with --resume a checkpoint of this configuration and build is continued.
+    session = std::make_unique<RunSession>(output_path, config, provenance, resume, std::cerr);
+    SignalledRun observer(*session);
     const LayerModel model(config);
     const ProgressPrinter printer(config.output.progress, model.mesh.n_contact());
     const auto progress = [&](double t, double t_end, double rate, double tn, int n_slip) {
       printer.report(t, t_end, rate, tn, n_slip, model.d.dt);
     };
-    const RunRecord record = simulate(model, progress, &g_stop, nullptr, session.get());
+    const RunRecord record = simulate(model, progress, stop, nullptr, &observer);
     printer.finish();
 
-    // 5. Say where the outcome went.
+    // 7. Say where the outcome went.
     if (record.complete) return kComplete;
     const bool interrupted = record.end_reason == "interrupted";
     std::cerr << "slidewave: run ended early (" << record.end_reason << ") at step " << record.n_steps_done

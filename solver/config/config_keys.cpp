@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "config/run_config.hpp"
+#include "config/strict_json.hpp"
 
 namespace slidewave {
 namespace {
@@ -90,6 +91,7 @@ ConfigKey number_list(std::string group, std::string name, std::optional<Bound> 
 
 std::vector<ConfigKey> make_table() {
   constexpr double kMaxStepsLimit = 1e9;  // keeps every step counter far inside a 32-bit int
+  constexpr long long kMaxSeed = (1LL << 53) - 1;
   return {
       number("material", "E", open(0), unbounded, "Pa", "Young's modulus",
              [](auto& c) -> auto& { return c.material.E; }),
@@ -180,7 +182,9 @@ std::vector<ConfigKey> make_table() {
       number("perturbation", "amplitude", closed(0), unbounded, "",
              "random initial displacement of the free nodes, relative to the preshear top displacement",
              [](auto& c) -> auto& { return c.perturbation.amplitude; }),
-      integer("perturbation", "seed", 0, std::nullopt, "seed of the deterministic generator (std::mt19937_64)",
+      integer("perturbation", "seed", 0, kMaxSeed,
+              "seed of the deterministic generator (std::mt19937_64); at most 2^53 - 1, the largest integer that "
+              "every JSON reader holding numbers as doubles keeps exactly (a larger one would name two runs alike)",
               [](auto& c) -> auto& { return c.perturbation.seed; }),
 
       choice("numerics", "linear_solver",
@@ -258,8 +262,9 @@ std::string interval_text(const ConfigKey& k) {
   return text;
 }
 
+/// A whole number of any size (1e19 and 18446744073709551615 included: they are then out of range,
+/// which within() reports, rather than "not an integer").
 bool is_integral(const json& v) {
-  if (v.is_number_unsigned()) return v.get<unsigned long long>() <= std::numeric_limits<long long>::max();
   if (v.is_number_integer()) return true;
   return v.is_number_float() && std::isfinite(v.get<double>()) && std::floor(v.get<double>()) == v.get<double>();
 }
@@ -290,7 +295,7 @@ std::string ConfigKey::allowed() const {
 }
 
 std::string ConfigKey::problem(const json& v) const {
-  const std::string head = path() + ": " + v.dump();
+  const std::string head = path() + ": " + excerpt(v.dump());
   const std::string tail = "; allowed " + allowed();
   switch (kind) {
     case KeyKind::optional_number:

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "config/config_keys.hpp"
+#include "config/strict_json.hpp"
 
 namespace slidewave {
 namespace {
@@ -29,7 +30,7 @@ void check_names(const nlohmann::json& input, std::vector<std::string>& problems
   const auto& groups = config_groups();
   for (const auto& [group, node] : input.items()) {
     if (std::find(groups.begin(), groups.end(), group) == groups.end()) {
-      problems.push_back(group + ": unknown group; allowed " + join(groups));
+      problems.push_back(excerpt(group) + ": unknown group; allowed " + join(groups));
       continue;
     }
     if (!node.is_object()) {
@@ -41,7 +42,7 @@ void check_names(const nlohmann::json& input, std::vector<std::string>& problems
       if (k.group == group) names.push_back(k.name);
     for (const auto& [name, _] : node.items())
       if (std::find(names.begin(), names.end(), name) == names.end())
-        problems.push_back(group + "." + name + ": unknown key; allowed " + join(names));
+        problems.push_back(group + "." + excerpt(name) + ": unknown key; allowed " + join(names));
   }
 }
 
@@ -106,12 +107,7 @@ std::string read_config_bytes(const std::string& path) {
 
 RunConfig parse_run_config_text(const std::string& text, const std::string& origin,
                                 const nlohmann::json& overrides) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ConfigError({origin + ": not valid JSON: " + e.what()});
-  }
+  nlohmann::json j = parse_strict_json(text, origin);
   if (j.is_object()) j.merge_patch(overrides);
   return parse_run_config(j);
 }

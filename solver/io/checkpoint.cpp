@@ -10,6 +10,7 @@
 
 #include "git_version.hpp"
 #include "io/hdf5_support.hpp"
+#include "io/run_id.hpp"
 
 namespace slidewave {
 
@@ -17,7 +18,8 @@ using h5::Handle;
 
 namespace {
 
-constexpr const char* kFormat = "slidewave checkpoint 1";
+// 2: the state digest (checkpoints of format 1 are not resumed: the run starts over).
+constexpr const char* kFormat = "slidewave checkpoint 2";
 
 std::string folder_of(const std::string& path) {
   const auto slash = path.find_last_of('/');
@@ -59,10 +61,49 @@ std::vector<std::string> members(hid_t group) {
   return names;
 }
 
+/// FNV-1a (64 bit) over bytes, the digest of everything a checkpoint holds: a flipped bit anywhere in
+/// its datasets or attributes changes it (HDF5 itself checks nothing in an unfiltered dataset).
+class Digest {
+ public:
+  Digest& add(const void* data, std::size_t n) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h_ = (h_ ^ bytes[i]) * 1099511628211ull;
+    return *this;
+  }
+  Digest& add(const std::string& text) { return add_size(text.size()).add(text.data(), text.size()); }
+  Digest& add_size(std::uint64_t n) { return add(&n, sizeof n); }
+  template <typename T>
+  Digest& add(const std::vector<T>& values) {
+    return add_size(values.size()).add(values.data(), values.size() * sizeof(T));
+  }
+  std::int64_t bits() const {
+    std::int64_t b;
+    std::memcpy(&b, &h_, sizeof b);
+    return b;
+  }
+
+ private:
+  std::uint64_t h_ = 1469598103934665603ull;
+};
+
+std::int64_t state_digest(const Checkpoint& c) {
+  Digest d;
+  d.add(c.build).add(c.config_json).add(c.run_id);
+  d.add_size(static_cast<std::uint64_t>(c.stream.n_global_rows))
+      .add_size(static_cast<std::uint64_t>(c.stream.n_interface_rows))
+      .add_size(static_cast<std::uint64_t>(c.stream.n_snapshots));
+  for (const auto& [name, digest] : c.stream.digests) d.add(name).add_size(digest);
+  for (const auto& [name, values] : c.state.reals) d.add(name).add(values);
+  for (const auto& [name, values] : c.state.integers) d.add(name).add(values);
+  return d.bits();
+}
+
 void write_contents(hid_t file, const std::string& path, const Checkpoint& c) {
   h5::write_string_attribute(file, "format", kFormat, path);
   h5::write_string_attribute(file, "build", c.build, path);
   h5::write_string_attribute(file, "config", c.config_json, path);
+  h5::write_string_attribute(file, "run_id", c.run_id, path);
+  h5::write_int_attribute(file, "state_digest", state_digest(c), path);
   const Handle stream = h5::group_create(file, "stream", path);
   h5::write_int_attribute(stream, "n_global_rows", c.stream.n_global_rows, path);
   h5::write_int_attribute(stream, "n_interface_rows", c.stream.n_interface_rows, path);
@@ -104,9 +145,11 @@ std::string current_build() { return std::string("slidewave ") + kVersion + " (g
 
 void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
   h5::silence_errors();
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  const std::string temporary = temporary_path_for(path, checkpoint.run_id);
   errno = 0;
-  const hid_t id = H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The root attribute config holds the resolved configuration: any size.
+  const hid_t id = H5Fcreate(temporary.c_str(), H5F_ACC_EXCL, h5::large_attribute_properties(H5P_FILE_CREATE),
+                             h5::large_attribute_access());
   if (id < 0) throw IoError("cannot create " + temporary + ": " + h5::last_error_reason());
   Handle file(id, H5Fclose);
   try {
@@ -143,6 +186,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   Checkpoint c;
   c.build = h5::read_string_attribute(file, "build", path);
   c.config_json = h5::read_string_attribute(file, "config", path);
+  c.run_id = h5::read_string_attribute(file, "run_id", path);
+  const long long recorded_digest = h5::read_int_attribute(file, "state_digest", path);
   const Handle stream = h5::group_open(file, "stream", path);
   c.stream.n_global_rows = h5::read_int_attribute(stream, "n_global_rows", path);
   c.stream.n_interface_rows = h5::read_int_attribute(stream, "n_interface_rows", path);
@@ -160,7 +205,23 @@ Checkpoint read_checkpoint(const std::string& path) {
   for (const auto& name : members(reals)) c.state.reals[name] = read_array<double>(reals, name, path);
   const Handle integers = h5::group_open(file, "integers", path);
   for (const auto& name : members(integers)) c.state.integers[name] = read_array<std::int64_t>(integers, name, path);
+  if (state_digest(c) != recorded_digest)
+    throw IoError(path + " is damaged: its content does not match the digest written with it");
   return c;
+}
+
+std::string inconsistent_counters(const Checkpoint& checkpoint, const RunConfig& config) {
+  const auto found = checkpoint.state.integers.find("counters");
+  if (found == checkpoint.state.integers.end() || found->second.size() < 2) return "it has no step counters";
+  const std::int64_t step = found->second[0], next_snapshot = found->second[1];
+  const auto& s = checkpoint.stream;
+  // One /global row at t = 0 and one per step; /interface rows at t = 0 and every interface_stride steps.
+  if (step < 0 || s.n_global_rows != step + 1 || s.n_interface_rows != step / config.output.interface_stride + 1 ||
+      s.n_snapshots != next_snapshot)
+    return "it counts step " + std::to_string(step) + " and snapshot " + std::to_string(next_snapshot) + ", but " +
+           std::to_string(s.n_global_rows) + " /global rows, " + std::to_string(s.n_interface_rows) +
+           " /interface rows and " + std::to_string(s.n_snapshots) + " snapshots in the partial file";
+  return "";
 }
 
 std::vector<std::string> checkpoint_mismatches(const Checkpoint& checkpoint, const RunConfig& config) {

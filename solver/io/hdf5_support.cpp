@@ -38,8 +38,10 @@ std::string last_error_reason() {
   ReasonSearch search;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, visit_error, &search);
   if (!search.os_reason.empty()) return search.os_reason;
-  if (errno != 0) return std::strerror(errno);
-  return search.innermost.empty() ? "HDF5 error" : "HDF5: " + search.innermost;
+  // errno only when HDF5 recorded nothing: after an HDF5 failure of its own (a Fletcher32 checksum
+  // mismatch) errno is whatever an earlier call left ("No such file or directory").
+  if (!search.innermost.empty()) return "HDF5: " + search.innermost;
+  return errno != 0 ? std::strerror(errno) : "HDF5 error";
 }
 
 herr_t check(herr_t status, const std::string& file, const std::string& what) {
@@ -71,8 +73,22 @@ Handle checked(hid_t id, herr_t (*close)(hid_t), const std::string& file, const 
 }
 }  // namespace
 
-Handle group_create(hid_t parent, const std::string& name, const std::string& file) {
-  return checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, file,
+Handle large_attribute_properties(hid_t property_class) {
+  Handle properties(H5Pcreate(property_class), H5Pclose);
+  if (!properties.valid() || H5Pset_attr_phase_change(properties, 0, 0) < 0)
+    throw IoError("cannot set up attribute storage: " + last_error_reason());
+  return properties;
+}
+
+Handle large_attribute_access() {
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (!access.valid() || H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_V18) < 0)
+    throw IoError("cannot set up attribute storage: " + last_error_reason());
+  return access;
+}
+
+Handle group_create(hid_t parent, const std::string& name, const std::string& file, hid_t properties) {
+  return checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, properties, H5P_DEFAULT), H5Gclose, file,
                  "create group " + name);
 }
 Handle group_open(hid_t parent, const std::string& name, const std::string& file) {

@@ -56,8 +56,18 @@ class Handle {
   herr_t (*close_)(hid_t) = nullptr;
 };
 
+/// Creation properties of a file (its root group) or a group whose attributes may be of any size:
+/// attributes kept in dense storage (a fractal heap) from the first one. Compact storage, HDF5's
+/// default, holds an attribute in the object header, whose messages are limited to 64 KiB: a longer
+/// configuration (whitespace, 9000 snapshot times) failed as "object header message is too large".
+Handle large_attribute_properties(hid_t property_class);
+/// File access properties that let the above take effect: objects in the HDF5 1.8 format (version-2
+/// object headers), which every reader since 1.8 (2008) opens; chunk indexes stay those of 1.8 too.
+Handle large_attribute_access();
+
 /// Checked constructors: throw IoError naming `file` when HDF5 returns a negative id.
-Handle group_create(hid_t parent, const std::string& name, const std::string& file);
+/// group_create() takes the group's creation properties (default: HDF5's).
+Handle group_create(hid_t parent, const std::string& name, const std::string& file, hid_t properties = H5P_DEFAULT);
 Handle group_open(hid_t parent, const std::string& name, const std::string& file);
 Handle dataset_open(hid_t parent, const std::string& name, const std::string& file);
 

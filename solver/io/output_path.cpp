@@ -9,6 +9,9 @@
 #include <cerrno>
 #include <cstring>
 
+#include "io/checkpoint.hpp"
+#include "io/output_lock.hpp"
+#include "io/run_id.hpp"
 #include "io/xdmf.hpp"
 
 namespace slidewave {
@@ -39,6 +42,17 @@ std::string partial_path_for(const std::string& h5_path) {
   return (has_h5 ? h5_path.substr(0, h5_path.size() - 3) : h5_path) + ".partial.h5";
 }
 
+std::vector<std::string> run_paths(const std::string& h5_path) {
+  const std::string partial = partial_path_for(h5_path);
+  return {h5_path, xdmf_path_for(h5_path), interface_xdmf_path_for(h5_path), partial, xdmf_path_for(partial),
+          interface_xdmf_path_for(partial), checkpoint_path_for(h5_path), lock_path_for(h5_path)};
+}
+
+void remove_temporaries_of(const std::string& h5_path, const std::string& run_id) {
+  if (!is_run_id(run_id)) return;
+  for (const auto& path : run_paths(h5_path)) ::unlink(temporary_path_for(path, run_id).c_str());
+}
+
 void check_output_path(const std::string& h5_path, const std::vector<std::string>& inputs) {
   const std::string head = "output " + h5_path + ": ";
   if (h5_path.empty() || h5_path.back() == '/') throw OutputPathError(head + "not a file name");
@@ -46,12 +60,17 @@ void check_output_path(const std::string& h5_path, const std::vector<std::string
     throw OutputPathError(head + "names an XDMF file: the XDMF sidecars of the run (written next to the HDF5 "
                           "file, X.h5 -> X.xdmf, X.interface.xdmf) would replace it; give the HDF5 name, e.g. -o run.h5");
 
-  const std::string partial = partial_path_for(h5_path);
-  for (const auto& written : {h5_path, xdmf_path_for(h5_path), interface_xdmf_path_for(h5_path), partial,
-                              xdmf_path_for(partial), interface_xdmf_path_for(partial)})
+  const auto written = run_paths(h5_path);
+  for (std::size_t i = 0; i < written.size(); ++i) {
     for (const auto& input : inputs)
-      if (same_file(written, input))
-        throw OutputPathError(head + "the run would write " + written + ", which is the input file " + input);
+      if (same_file(written[i], input))
+        throw OutputPathError(head + "the run would write or remove " + written[i] + ", which is the input file " +
+                              input);
+    for (std::size_t k = 0; k < i; ++k)
+      if (written[k] == written[i] || same_file(written[k], written[i]))
+        throw OutputPathError(head + "the run would write both " + written[k] + " and " + written[i] +
+                              ", which are the same file");
+  }
 
   struct stat info {};
   if (::stat(h5_path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) throw OutputPathError(head + "is a folder");

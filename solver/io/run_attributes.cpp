@@ -25,9 +25,10 @@ void write_run_header(hid_t file, const std::string& path, const RunConfig& conf
   write_string_attribute(file, "slidewave_version", kVersion, path);
   write_string_attribute(file, "git_commit", kGitCommit, path);
   write_string_attribute(file, "call", provenance.call, path);
+  write_string_attribute(file, "run_id", provenance.run_id, path);
   write_string_attribute(file, "created_utc", utc_now(), path);
   write_string_attribute(file, "config", config.to_json().dump(), path);
-  const Handle setup = group_create(file, "setup", path);
+  const Handle setup = group_create(file, "setup", path, large_attribute_properties(H5P_GROUP_CREATE));
   write_string_attribute(setup, "config_input", provenance.config_input, path);
   const struct { const char* name; double value; } constants[] = {
       {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "config/run_config.hpp"
+#include "io/run_id.hpp"
 #include "model/run_record.hpp"
 
 namespace slidewave {
@@ -16,8 +17,9 @@ namespace slidewave {
 inline constexpr int kRunFormatVersion = 2;
 
 struct Provenance {
-  std::string call;          ///< the command line
-  std::string config_input;  ///< the verbatim input file
+  std::string call;                   ///< the command line
+  std::string config_input;           ///< the verbatim input file
+  std::string run_id = new_run_id();  ///< this run (root attribute run_id; names its temporary files)
 };
 
 /// Root attributes that do not change during the run, and /setup with the constants known before the

@@ -3,36 +3,18 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
 #include "io/hdf5_support.hpp"
+#include "io/run_id.hpp"
 #include "io/xdmf.hpp"
 
 namespace slidewave {
 
 namespace {
 
-namespace fs = std::filesystem;
-
 bool exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
-
-/// Removes what killed runs into the same output may have left: "<name>.tmp.<pid>" of the run file,
-/// the partial file and the checkpoint, and the staged sidecars "<RUN>.xdmf.tmp", "<RUN>.interface.xdmf.tmp".
-void remove_stale_temporaries(const std::vector<std::string>& names) {
-  for (const auto& name : names) {
-    const fs::path path(name);
-    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    const std::string prefix = path.filename().string() + ".tmp";
-    std::error_code error;
-    for (const auto& entry : fs::directory_iterator(folder, error)) {
-      const std::string file = entry.path().filename().string();
-      if (file == prefix || file.rfind(prefix + ".", 0) == 0) fs::remove(entry.path(), error);
-    }
-  }
-}
 
 }  // namespace
 
@@ -42,60 +24,69 @@ RunSession::RunSession(std::string final_path, const RunConfig& config, const Pr
       partial_path_(partial_path_for(final_path_)),
       checkpoint_path_(checkpoint_path_for(final_path_)),
       config_(config),
+      provenance_(provenance),
+      notes_(notes),
       interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-          std::chrono::duration<double>(config.output.checkpoint_interval))),
-      last_checkpoint_(std::chrono::steady_clock::now()) {
-  if (resume && exists(checkpoint_path_)) {
-    Checkpoint checkpoint;
-    bool readable = true;
-    try {
-      checkpoint = read_checkpoint(checkpoint_path_);
-    } catch (const IoError& e) {
-      notes << "slidewave: cannot resume: " << e.what() << "; starting over\n";
-      readable = false;
-    }
-    if (readable) {
-      const auto problems = checkpoint_mismatches(checkpoint, config);
-      if (!problems.empty()) {
-        std::string text = checkpoint_path_ + " was written for another run, so it cannot be resumed:\n";
-        for (const auto& p : problems) text += "  " + p + "\n";
-        text += "(run without --resume to start over, which removes it)";
-        throw ResumeRefused(text);
-      }
-      remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_),
-                            interface_xdmf_path_for(final_path_)});
-      // The rows are copied into a new file that replaces the partial file only once they are verified:
-      // a kill meanwhile leaves the partial file and the checkpoint as they were.
-      writer_ = std::make_unique<RunWriter>(partial_path_ + ".tmp." + std::to_string(::getpid()), config, provenance);
-      try {
-        writer_->copy_prefix(partial_path_, checkpoint.stream);
-        writer_->move_to(partial_path_);
-        start_ = std::move(checkpoint);
-        resumed_ = true;
-        checkpoint_written_ = true;  // the checkpoint on disk counts rows the new partial file holds
-        const auto& counters = start_.state.integers.at("counters");
-        notes << "slidewave: resuming from step " << counters.at(0) << " (" << checkpoint_path_ << ")\n";
-      } catch (const StreamMismatch& e) {
-        writer_->discard();
-        writer_.reset();
-        notes << "slidewave: cannot resume: " << e.what() << "; starting over\n";
-      } catch (...) {
-        writer_->discard();  // the temporary copy; the partial file and the checkpoint stay as they were
-        throw;
-      }
-    }
+          std::chrono::duration<double>(config.output.checkpoint_interval))) {
+  if (!resume || !exists(checkpoint_path_)) return;
+  Checkpoint checkpoint;
+  try {
+    checkpoint = read_checkpoint(checkpoint_path_);
+  } catch (const IoError& e) {
+    notes_ << "slidewave: cannot resume: " << e.what() << "; starting over\n";
+    return;
   }
-  if (!writer_) start_over(provenance);
+  const auto problems = checkpoint_mismatches(checkpoint, config);
+  if (!problems.empty()) {
+    std::string text = checkpoint_path_ + " was written for another run, so it cannot be resumed:\n";
+    for (const auto& p : problems) text += "  " + p + "\n";
+    text += "(run without --resume to start over, which removes it)";
+    throw ResumeRefused(text);
+  }
+  const std::string inconsistency = inconsistent_counters(checkpoint, config);
+  if (!inconsistency.empty()) {
+    notes_ << "slidewave: cannot resume: " << checkpoint_path_ << " is damaged: " << inconsistency
+           << "; starting over\n";
+    return;
+  }
+  to_resume_ = std::move(checkpoint);
 }
 
 RunSession::~RunSession() = default;
 
-void RunSession::start_over(const Provenance& provenance) {
-  remove_stale_temporaries({final_path_, partial_path_, checkpoint_path_, xdmf_path_for(final_path_),
-                            interface_xdmf_path_for(final_path_)});
+void RunSession::setup_done() {
+  last_checkpoint_ = std::chrono::steady_clock::now();
+  if (to_resume_) resume_from(std::move(*to_resume_));
+  to_resume_.reset();
+  if (!writer_) start_over();
+}
+
+void RunSession::resume_from(Checkpoint checkpoint) {
+  // The rows are copied into a new file that replaces the partial file only once they are verified:
+  // a kill meanwhile leaves the partial file and the checkpoint as they were.
+  writer_ = std::make_unique<RunWriter>(temporary_path_for(partial_path_, provenance_.run_id), config_, provenance_);
+  try {
+    writer_->copy_prefix(partial_path_, checkpoint.stream);
+    writer_->move_to(partial_path_);
+    start_ = std::move(checkpoint);
+    resumed_ = true;
+    checkpoint_written_ = true;  // the checkpoint on disk counts rows the new partial file holds
+    notes_ << "slidewave: resuming from step " << start_.state.integers.at("counters").at(0) << " ("
+           << checkpoint_path_ << ")\n";
+  } catch (const StreamMismatch& e) {
+    writer_->discard();
+    writer_.reset();
+    notes_ << "slidewave: cannot resume: " << e.what() << "; starting over\n";
+  } catch (...) {
+    writer_->discard();  // the temporary copy; the partial file and the checkpoint stay as they were
+    throw;
+  }
+}
+
+void RunSession::start_over() {
   if (exists(checkpoint_path_) && std::remove(checkpoint_path_.c_str()) != 0)
     throw IoError("cannot remove the stale " + checkpoint_path_ + ": " + std::strerror(errno));
-  writer_ = std::make_unique<RunWriter>(partial_path_, config_, provenance);
+  writer_ = std::make_unique<RunWriter>(partial_path_, config_, provenance_);
 }
 
 void RunSession::write_checkpoint_now(RunRecord& record, const Capture& capture) {
@@ -106,6 +97,7 @@ void RunSession::write_checkpoint_now(RunRecord& record, const Capture& capture)
   checkpoint.build = current_build();
   checkpoint.stream = writer_->position();
   checkpoint.state = capture();
+  checkpoint.run_id = provenance_.run_id;
   write_checkpoint(checkpoint_path_, checkpoint);
   checkpoint_written_ = true;
   last_checkpoint_ = std::chrono::steady_clock::now();
@@ -140,8 +132,7 @@ std::string RunSession::abandon() noexcept {
     writer_->close();
     return partial_path_ + " and " + checkpoint_path_ + " are kept: rerun with --resume once the cause is fixed";
   }
-  writer_->discard();
-  std::remove((partial_path_ + ".tmp." + std::to_string(::getpid())).c_str());
+  writer_->discard();  // the partial file, or the temporary copy of a resume
   return "";
 }
 

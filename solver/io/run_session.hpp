@@ -8,6 +8,7 @@
 // --resume continues from the checkpoint when it was written for the same configuration and build.
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -27,15 +28,20 @@ class ResumeRefused : public std::runtime_error {
 
 class RunSession : public RunObserver {
  public:
-  /// Prepares the output of a run into `final_path`. With `resume` and a checkpoint beside it: throws
-  /// ResumeRefused (listing what differs) or carries the partial file's rows over; when the partial file
-  /// no longer holds what the checkpoint counted (or the checkpoint is unreadable), starts over and says
-  /// so on `notes`. Without: starts a new partial file (a stale checkpoint is removed).
-  /// Throws IoError when a file cannot be written.
+  /// Prepares the output of a run into `final_path`, creating no file yet (setup_done() does: a kill
+  /// during the model's setup, minutes for a large mesh, leaves nothing behind). With `resume` and a
+  /// checkpoint beside it: reads it (its digest and its step counters against its row counts are
+  /// checked) and throws ResumeRefused, listing what differs, when it was written for another
+  /// configuration or build; an unreadable, damaged or inconsistent checkpoint is reported on `notes`
+  /// and the run starts over. Temporaries are named after `provenance.run_id` (io/run_id.hpp).
   RunSession(std::string final_path, const RunConfig& config, const Provenance& provenance, bool resume,
              std::ostream& notes);
   ~RunSession() override;
 
+  /// Creates RUN.partial.h5: the checkpoint's rows carried over from the earlier partial file (when they
+  /// are intact; else a note on `notes` and a start from the beginning), or a new one (a stale
+  /// checkpoint is removed). Throws IoError when a file cannot be written.
+  void setup_done() override;
   void after_step(RunRecord& record, const Capture& capture) override;
   /// Interrupted: final checkpoint, RUN.partial.h5 closed (outcome interrupted). Otherwise: RUN.h5 in
   /// place, checkpoint removed. Throws IoError.
@@ -50,12 +56,16 @@ class RunSession : public RunObserver {
   const std::string& checkpoint_path() const { return checkpoint_path_; }
 
  private:
-  void start_over(const Provenance& provenance);
+  void resume_from(Checkpoint checkpoint);
+  void start_over();
   void write_checkpoint_now(RunRecord& record, const Capture& capture);
 
   std::string final_path_, partial_path_, checkpoint_path_;
   RunConfig config_;
+  Provenance provenance_;
+  std::ostream& notes_;
   std::unique_ptr<RunWriter> writer_;
+  std::optional<Checkpoint> to_resume_;  ///< read and verified by the constructor, used by setup_done()
   Checkpoint start_;
   bool resumed_ = false;
   bool checkpoint_written_ = false;

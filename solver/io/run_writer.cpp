@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "config/strict_json.hpp"
 #include "io/hdf5_support.hpp"
 #include "io/run_layout.hpp"
 #include "io/xdmf.hpp"
@@ -133,13 +134,15 @@ struct RunWriter::Files {
 
 
 RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance)
-    : path_(std::move(working_path)), files_(std::make_unique<Files>()) {
+    : path_(std::move(working_path)), run_id_(provenance.run_id), files_(std::make_unique<Files>()) {
   for (const auto& c : kGlobalColumns) global_columns_.push_back(&c);
   if (config.output.energy_decomposition)
     for (const auto& c : kHhtColumns) global_columns_.push_back(&c);
   h5::silence_errors();
   errno = 0;
-  const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The root attribute config and /setup/config_input hold the configuration: any size.
+  const hid_t file = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, h5::large_attribute_properties(H5P_FILE_CREATE),
+                               h5::large_attribute_access());
   if (file < 0) throw IoError("cannot create " + path_ + ": " + h5::last_error_reason());
   files_->file = Handle(file, H5Fclose);
   try {
@@ -264,20 +267,40 @@ void RunWriter::finish(RunRecord& record) {
   h5::check(files_->close(), path_, "write");
 }
 
+void RunWriter::check_own_file() const {
+  const std::string head = "cannot put " + path_ + " in place: ";
+  errno = 0;
+  Handle file(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw IoError(head + "it is not readable: " + h5::last_error_reason());
+  const htri_t has_id = H5Aexists(file, "run_id");
+  const std::string id = has_id > 0 ? h5::read_string_attribute(file, "run_id", path_) : "none";
+  if (id != run_id_)
+    throw IoError(head + "another run wrote it (run_id " + excerpt(id) + ", this run " + run_id_ + ")");
+  for (const auto& [name, n_rows] : {std::pair{"/global/t", position_.n_global_rows},
+                                     std::pair{"/interface/t", position_.n_interface_rows}}) {
+    if (n_rows == 0) continue;
+    const Handle set = h5::dataset_open(file, name, path_);
+    Handle space(H5Dget_space(set), H5Sclose);
+    if (H5Sget_simple_extent_npoints(space) != n_rows)
+      throw IoError(head + std::string(name) + " does not hold the " + std::to_string(n_rows) + " rows this run wrote");
+  }
+}
+
 void RunWriter::put_in_place(const std::string& final_path) {
+  check_own_file();
   try {
-    stage_xdmf_sidecars(final_path, outline_);
+    stage_xdmf_sidecars(final_path, outline_, run_id_);
   } catch (const std::exception& e) {
     throw IoError(e.what());
   }
   if (std::rename(path_.c_str(), final_path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
-    discard_xdmf_sidecars(final_path);
+    discard_xdmf_sidecars(final_path, run_id_);
     throw IoError("cannot rename " + path_ + " to " + final_path + ": " + reason);
   }
   path_ = final_path;
   try {
-    publish_xdmf_sidecars(final_path, outline_);
+    publish_xdmf_sidecars(final_path, outline_, run_id_);
   } catch (const std::exception& e) {
     throw IoError(e.what());
   }
@@ -285,10 +308,10 @@ void RunWriter::put_in_place(const std::string& final_path) {
 
 void RunWriter::write_sidecars() {
   try {
-    stage_xdmf_sidecars(path_, outline_);
-    publish_xdmf_sidecars(path_, outline_);
+    stage_xdmf_sidecars(path_, outline_, run_id_);
+    publish_xdmf_sidecars(path_, outline_, run_id_);
   } catch (const std::exception& e) {
-    discard_xdmf_sidecars(path_);
+    discard_xdmf_sidecars(path_, run_id_);
     throw IoError(e.what());
   }
 }

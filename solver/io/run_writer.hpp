@@ -69,7 +69,9 @@ class RunWriter {
   void finish(RunRecord& record);
 
   /// Renames the closed working file to `final_path` (atomic); the XDMF sidecars (io/xdmf.hpp) are
-  /// staged before and renamed after it, so that they never point at a missing file.
+  /// staged before and renamed after it, so that they never point at a missing file. First checks that
+  /// the working file is this writer's own (its run_id), readable and holding every row written: a
+  /// file another run replaced or truncated under the same name never goes into place (IoError).
   void put_in_place(const std::string& final_path);
   /// Writes the XDMF sidecars of the closed working file beside it (an interrupted run's partial file).
   void write_sidecars();
@@ -92,9 +94,11 @@ class RunWriter {
  private:
   struct Series;
   void ensure_layout(const RunRecord& record);
+  void check_own_file() const;
   void write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh);
 
   std::string path_;
+  std::string run_id_;  ///< Provenance::run_id: written as the root attribute run_id, names the staged sidecars
   struct Files;
   std::unique_ptr<Files> files_;
   std::map<std::string, std::unique_ptr<Series>> series_;  ///< by dataset path

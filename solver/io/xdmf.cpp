@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/run_id.hpp"
 #include "io/run_layout.hpp"
 
 namespace slidewave {
@@ -127,27 +128,30 @@ void write_interface_xdmf(const std::string& path, const std::string& h5_name, c
   end_temporal_collection(out, path);
 }
 
-void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record) {
+void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record, const std::string& run_id) {
   const std::string h5_name = base_name(h5_path);
   try {
-    if (has_bulk(record)) write_bulk_xdmf(xdmf_path_for(h5_path) + ".tmp", h5_name, record);
-    if (has_interface(record)) write_interface_xdmf(interface_xdmf_path_for(h5_path) + ".tmp", h5_name, record);
+    if (has_bulk(record)) write_bulk_xdmf(temporary_path_for(xdmf_path_for(h5_path), run_id), h5_name, record);
+    if (has_interface(record))
+      write_interface_xdmf(temporary_path_for(interface_xdmf_path_for(h5_path), run_id), h5_name, record);
   } catch (...) {
-    discard_xdmf_sidecars(h5_path);
+    discard_xdmf_sidecars(h5_path, run_id);
     throw;
   }
 }
 
-void publish_xdmf_sidecars(const std::string& h5_path, const RunRecord& record) {
+void publish_xdmf_sidecars(const std::string& h5_path, const RunRecord& record, const std::string& run_id) {
   for (const auto& [present, sidecar] : {std::pair{has_bulk(record), xdmf_path_for(h5_path)},
-                                         std::pair{has_interface(record), interface_xdmf_path_for(h5_path)}})
-    if (present && std::rename((sidecar + ".tmp").c_str(), sidecar.c_str()) != 0)
-      throw std::runtime_error("cannot rename " + sidecar + ".tmp to " + sidecar);
+                                         std::pair{has_interface(record), interface_xdmf_path_for(h5_path)}}) {
+    const std::string staged = temporary_path_for(sidecar, run_id);
+    if (present && std::rename(staged.c_str(), sidecar.c_str()) != 0)
+      throw std::runtime_error("cannot rename " + staged + " to " + sidecar);
+  }
 }
 
-void discard_xdmf_sidecars(const std::string& h5_path) {
-  std::remove((xdmf_path_for(h5_path) + ".tmp").c_str());
-  std::remove((interface_xdmf_path_for(h5_path) + ".tmp").c_str());
+void discard_xdmf_sidecars(const std::string& h5_path, const std::string& run_id) {
+  std::remove(temporary_path_for(xdmf_path_for(h5_path), run_id).c_str());
+  std::remove(temporary_path_for(interface_xdmf_path_for(h5_path), run_id).c_str());
 }
 
 }  // namespace slidewave

@@ -31,13 +31,14 @@ void write_bulk_xdmf(const std::string& path, const std::string& h5_name, const 
 void write_interface_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& record);
 
 /// Writes the sidecars the record has data for (bulk: snapshots; interface: output times) beside
-/// `h5_path` under the temporary names `<sidecar>.tmp`. On failure removes them and throws.
-void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record);
+/// `h5_path` under the temporary names "<sidecar>.tmp.<run_id>" (io/run_id.hpp). On failure removes
+/// them and throws.
+void stage_xdmf_sidecars(const std::string& h5_path, const RunRecord& record, const std::string& run_id);
 
 /// Renames the staged sidecars into place (call after RUN.h5 itself was renamed). Throws on failure.
-void publish_xdmf_sidecars(const std::string& h5_path, const RunRecord& record);
+void publish_xdmf_sidecars(const std::string& h5_path, const RunRecord& record, const std::string& run_id);
 
 /// Removes the staged sidecars (RUN.h5 could not be put in place).
-void discard_xdmf_sidecars(const std::string& h5_path);
+void discard_xdmf_sidecars(const std::string& h5_path, const std::string& run_id);
 
 }  // namespace slidewave

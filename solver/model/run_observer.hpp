@@ -25,6 +25,10 @@ class RunObserver {
  public:
   virtual ~RunObserver() = default;
   using Capture = std::function<StateArrays()>;
+  /// Once the setup (preload, factorizations, Delassus operator) is done, before the first step and
+  /// before start_state(): the moment to create output files, so that a run stopped or killed during
+  /// its setup leaves none.
+  virtual void setup_done() {}
   /// After each step's rows are recorded (and once after the rows of t = 0, at step 0).
   /// `capture` returns the state after that step; call it only when needed (it copies the state).
   virtual void after_step(RunRecord& record, const Capture& capture) = 0;

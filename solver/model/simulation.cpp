@@ -197,6 +197,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   UniformStick stick(m, pre);
   const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
   const std::int64_t n_handover = stick.handover_step(n_steps_max, stop_requested);
+  if (observer) observer->setup_done();
   const StateArrays* resumed = observer ? observer->start_state() : nullptr;
   if (resumed) restore_from_arrays(*resumed, loop);
   bool uniform = loop.step < n_handover;  // the stick stage: the layer moves as its column (model/uniform_stick.hpp)

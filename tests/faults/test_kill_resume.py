@@ -5,7 +5,9 @@ leaves RUN.partial.h5 (complete = 0, end_reason interrupted) with RUN.checkpoint
 another configuration is refused (exit 2) naming the key; without a checkpoint --resume starts over.
 
 Runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN: tests/support/solver_runs.py) in temporary
-folders."""
+folders. The signals come from the solver's test hook (SLIDEWAVE_TEST_SIGNAL_AT_STEP, docs/contracts.md
+section 2) at a chosen step, so that no test depends on the machine's speed (they used to sleep a
+fraction of the reference run's wall time and skip when the run had already finished)."""
 
 import json
 import os
@@ -13,7 +15,6 @@ import shutil
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import h5py
@@ -23,7 +24,7 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
 from solver_runs import solver_or_skip  # noqa: E402
 
-# H/16 with a short step: ~30000 steps, a few seconds of wall time; checkpoints every 0.2 s.
+# H/16 with a short step: 25820 steps, a few seconds of wall time; checkpoints every 0.2 s.
 CONFIG = {
     "mesh": {"elements_per_H": 16},
     "friction": {"f": 1.5},
@@ -35,6 +36,9 @@ CONFIG = {
 
 def solver():
     return str(solver_or_skip())
+
+
+N_STEPS = 25820
 
 
 def write_config(folder, config=CONFIG):
@@ -74,33 +78,30 @@ def attributes(path):
 
 @pytest.fixture(scope="module")
 def reference(tmp_path_factory):
-    """The uninterrupted run, and how long it takes."""
+    """The uninterrupted run."""
     folder = tmp_path_factory.mktemp("reference")
-    start = time.monotonic()
     result = run(write_config(folder), folder / "RUN.h5")
-    elapsed = time.monotonic() - start
     assert result.returncode == 0, result.stderr
     assert attributes(folder / "RUN.h5")["complete"] == 1
+    assert attributes(folder / "RUN.h5")["n_steps_done"] == N_STEPS
     assert sorted(p.name for p in folder.iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf", "run.json"]
-    return folder / "RUN.h5", elapsed
+    return folder / "RUN.h5"
 
 
-def start_and_signal(folder, delay, signum):
-    process = subprocess.Popen([solver(), "run", str(write_config(folder)), "-o", str(folder / "RUN.h5")],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(delay)
-    process.send_signal(signum)
-    _, stderr = process.communicate(timeout=600)
-    return process.returncode, stderr
+def start_and_signal(folder, fraction, signum):
+    """Runs CONFIG into folder/RUN.h5 and has it signal itself after step fraction * N_STEPS."""
+    hook = {"SLIDEWAVE_TEST_SIGNAL_AT_STEP": str(int(fraction * N_STEPS)),
+            "SLIDEWAVE_TEST_SIGNAL": "KILL" if signum == signal.SIGKILL else "TERM"}
+    result = subprocess.run([solver(), "run", str(write_config(folder)), "-o", str(folder / "RUN.h5")],
+                            capture_output=True, text=True, timeout=600, env={**os.environ, **hook})
+    return result.returncode, result.stderr
 
 
 @pytest.mark.parametrize("fraction", [0.15, 0.4, 0.65])
 @pytest.mark.parametrize("signum", [signal.SIGKILL, signal.SIGTERM], ids=["kill", "term"])
 def test_resume_after_a_signal_is_bit_identical(tmp_path, reference, fraction, signum):
-    reference_file, elapsed = reference
-    code, stderr = start_and_signal(tmp_path, fraction * elapsed, signum)
-    if code == 0:
-        pytest.skip("the run finished before the signal (machine faster than the reference run)")
+    reference_file = reference
+    code, stderr = start_and_signal(tmp_path, fraction, signum)
     names = {p.name for p in tmp_path.iterdir()}
     assert "RUN.h5" not in names, "an interrupted run must not create RUN.h5"
     if signum == signal.SIGTERM:
@@ -110,7 +111,7 @@ def test_resume_after_a_signal_is_bit_identical(tmp_path, reference, fraction, s
         partial = attributes(tmp_path / "RUN.partial.h5")
         assert partial["complete"] == 0
         assert partial["end_reason"] == "interrupted"
-        assert partial["n_steps_done"] > 0
+        assert partial["n_steps_done"] == int(fraction * N_STEPS)
     else:
         assert code == -signal.SIGKILL
     had_checkpoint = (tmp_path / "RUN.checkpoint.h5").exists()
@@ -126,11 +127,11 @@ def test_resume_after_a_signal_is_bit_identical(tmp_path, reference, fraction, s
 
 
 def test_stopped_rerun_leaves_the_complete_file_untouched(tmp_path, reference):
-    reference_file, elapsed = reference
+    reference_file = reference
     shutil.copy(reference_file, tmp_path / "RUN.h5")
     before = (tmp_path / "RUN.h5").read_bytes()
     stat_before = os.stat(tmp_path / "RUN.h5")
-    code, stderr = start_and_signal(tmp_path, 0.4 * elapsed, signal.SIGTERM)
+    code, stderr = start_and_signal(tmp_path, 0.4, signal.SIGTERM)
     assert code == 3, stderr
     assert (tmp_path / "RUN.h5").read_bytes() == before
     assert os.stat(tmp_path / "RUN.h5").st_mtime_ns == stat_before.st_mtime_ns
@@ -138,8 +139,7 @@ def test_stopped_rerun_leaves_the_complete_file_untouched(tmp_path, reference):
 
 
 def test_checkpoint_of_another_configuration_is_refused(tmp_path, reference):
-    _, elapsed = reference
-    code, stderr = start_and_signal(tmp_path, 0.4 * elapsed, signal.SIGTERM)
+    code, stderr = start_and_signal(tmp_path, 0.4, signal.SIGTERM)
     assert code == 3, stderr
     changed = json.loads(json.dumps(CONFIG))
     changed["friction"]["f"] = 1.4
@@ -155,15 +155,15 @@ def test_checkpoint_of_another_configuration_is_refused(tmp_path, reference):
 
 
 def test_resume_without_checkpoint_starts_over(tmp_path, reference):
-    reference_file, _ = reference
+    reference_file = reference
     result = run(write_config(tmp_path), tmp_path / "RUN.h5", "--resume")
     assert result.returncode == 0, result.stderr
     assert_same_datasets(tmp_path / "RUN.h5", reference_file)
 
 
 def test_partial_file_without_the_checkpointed_rows_starts_over(tmp_path, reference):
-    reference_file, elapsed = reference
-    code, stderr = start_and_signal(tmp_path, 0.5 * elapsed, signal.SIGTERM)
+    reference_file = reference
+    code, stderr = start_and_signal(tmp_path, 0.5, signal.SIGTERM)
     assert code == 3, stderr
     with h5py.File(tmp_path / "RUN.partial.h5", "r+") as f:  # rows changed behind the checkpoint's back
         f["global/T"][0] = 1.0

@@ -122,6 +122,43 @@ TEST(Checkpoint, ReadingSomethingElseIsAnIoError) {
   }
 }
 
+TEST(Checkpoint, ADamagedOneIsAnIoError) {
+  const TempDir dir("checkpoint_damaged");
+  Checkpoint c = sample(testing::make_config());
+  write_checkpoint(dir / "c.h5", c);
+  {
+    const hid_t file = H5Fopen((dir / "c.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t set = H5Dopen2(file, "integers/step", H5P_DEFAULT);
+    const std::int64_t edited = 99999999;
+    H5Dwrite(set, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, &edited);
+    H5Dclose(set);
+    H5Fclose(file);
+  }
+  try {
+    read_checkpoint(dir / "c.h5");
+    ADD_FAILURE() << "expected an IoError";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("damaged"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Checkpoint, CountersMustMatchTheRowCounts) {
+  const RunConfig config = testing::make_config({{"output", {{"interface_stride", 4}}}});
+  Checkpoint c = sample(config);
+  c.stream = StreamPosition{};
+  c.stream.n_global_rows = 1235;      // t = 0 and 1234 steps
+  c.stream.n_interface_rows = 309;    // t = 0 and every 4th step
+  c.stream.n_snapshots = 2;
+  c.state.integers["counters"] = {1234, 2, 0};
+  EXPECT_EQ(inconsistent_counters(c, config), "");
+  c.state.integers["counters"] = {99999999, 2, 0};
+  EXPECT_NE(inconsistent_counters(c, config).find("step 99999999"), std::string::npos);
+  c.state.integers["counters"] = {1234, 3, 0};
+  EXPECT_NE(inconsistent_counters(c, config), "");
+  c.state.integers.erase("counters");
+  EXPECT_NE(inconsistent_counters(c, config), "");
+}
+
 TEST(Checkpoint, Path) {
   EXPECT_EQ(checkpoint_path_for("out/run.h5"), "out/run.checkpoint.h5");
   EXPECT_EQ(checkpoint_path_for("run"), "run.checkpoint.h5");

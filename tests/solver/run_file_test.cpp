@@ -152,8 +152,8 @@ TEST(RunFile, RoundTripWithProvenance) {
   std::sort(setup_names.begin(), setup_names.end());
   EXPECT_EQ(attribute_names(setup), setup_names);
   const std::vector<std::string> root_names{"call", "complete", "config", "created_utc", "creator", "end_reason",
-                                            "format_version", "git_commit", "n_steps_done", "slidewave_version",
-                                            "t_first_opening"};
+                                            "format_version", "git_commit", "n_steps_done", "run_id",
+                                            "slidewave_version", "t_first_opening"};
   EXPECT_EQ(attribute_names(file), root_names) << "the root keeps provenance and outcome only";
   EXPECT_EQ(rec.opening_threshold, opening_threshold(config)) << "the threshold the loop used";
   EXPECT_EQ(read_number_attribute<double>(setup, "opening_threshold"), 1e-2 * 0.001 * 25.0);

@@ -48,6 +48,33 @@ RunRecord rows_of(const RunRecord& all, size_t g0, size_t g1, size_t i0, size_t 
   return block;
 }
 
+TEST(RunWriter, PutsInPlaceOnlyItsOwnFile) {
+  // Another run (a second process into the same output) replaced the working file under this writer:
+  // it must not go into place as this run's result (issue 21 item 1).
+  const TempDir dir("writer_own_file");
+  const auto& [config, rec] = small_run();
+  RunWriter mine(dir / "run.partial.h5", config, Provenance{"mine", kSmallRunInput});
+  RunRecord rows = rec;
+  mine.finish(rows);
+  RunWriter other(dir / "run.partial.h5", config, Provenance{"other", kSmallRunInput});
+  RunRecord other_rows = rec;
+  other.finish(other_rows);
+  try {
+    mine.put_in_place(dir / "run.h5");
+    ADD_FAILURE() << "expected an IoError";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("another run wrote it"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"run.partial.h5"}) << "no RUN.h5, no sidecar";
+  // Truncated behind its back: not readable, not put in place either.
+  RunWriter truncated(dir / "cut.partial.h5", config, Provenance{"cut", kSmallRunInput});
+  RunRecord cut_rows = rec;
+  truncated.finish(cut_rows);
+  std::filesystem::resize_file(dir / "cut.partial.h5", 96);
+  EXPECT_THROW(truncated.put_in_place(dir / "cut.h5"), IoError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "cut.h5"));
+}
+
 TEST(RunWriter, DrainedInBlocksEqualsWholeFile) {
   const TempDir dir("writer_blocks");
   const auto& [config, rec] = small_run();
