@@ -1,17 +1,18 @@
 #!/usr/bin/python3
-"""Does a faster solver path change Table 1? Cell by cell, a sweep on that path against the same grid on
-the default path, in units of the seed spread of the published cells' ensemble.
+"""Does a solver change move Table 1? Cell by cell, the Table-1 grid after the change against the same grid
+before it, in units of the seed spread of the published cells' ensemble.
 
-A path that solves the same discrete problem to round-off or to the contact tolerance (`spectral`,
-contact.all_stick = exact) cannot reproduce a run bit for bit after slip onset (the problem is chaotic
-there), so the question is whether it moves a celerity by more than the perturbation seed already does.
-Prints, for every published cell, the default and the fast celerity, their difference and that difference
-over the ensemble's seed standard deviation; then, over the whole grid, how many cells keep their
-category (and, for those that do not, how far the seeds agree there), the largest relative change, and
-the published cells within 5 % on each path.
+A change that solves the same discrete problem another way (to round-off, to the contact tolerance, or with
+another realization of the seeded perturbation, docs/stick-phase.md) cannot reproduce a run bit for bit
+after slip onset (the problem is chaotic there), so the question is whether it moves a celerity by more
+than the perturbation seed already does. Prints, for every published cell, the celerity before and after,
+their difference and that difference over the ensemble's seed standard deviation; then, over the whole
+grid, how many cells keep their category (and, for those that do not, how far the seeds agree there), the
+largest relative change, and the published cells within 5 % before and after.
 
-Usage (from the study's folder, after `snakemake -c2 table1_fast` and with `table1`, `table1_ensemble` built):
-    bench/fast_path_check.py results/table1/table/all_metrics.csv results/table1_fast/table/all_metrics.csv \
+Usage (from the study's folder, with `table1` and `table1_ensemble` built after the change; the committed
+table of before):
+    bench/table1_shift.py study/results/table1/all_metrics.csv results/table1/table/all_metrics.csv \
         results/table1_ensemble/table/ensemble.csv
 """
 import argparse
@@ -35,8 +36,8 @@ def number(text):
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("default_metrics", help="all_metrics.csv of the sweep on the default path")
-    parser.add_argument("fast_metrics", help="all_metrics.csv of the same grid on the fast path")
+    parser.add_argument("default_metrics", help="all_metrics.csv of the grid before the change")
+    parser.add_argument("fast_metrics", help="all_metrics.csv of the same grid after it")
     parser.add_argument("ensemble", help="ensemble.csv of the published cells (seed spread, published value)")
     args = parser.parse_args(argv)
     default, fast, ensemble = by_cell(args.default_metrics), by_cell(args.fast_metrics), by_cell(args.ensemble)
@@ -45,7 +46,7 @@ def main(argv=None) -> int:
         print(f"error: the two sweeps differ in their cells: {missing}", file=sys.stderr)
         return 2
 
-    print(f"{'nu':>5} {'f':>5} {'published':>10} {'default':>10} {'fast':>10} {'diff':>10} {'seed_std':>9} {'diff/std':>8}")
+    print(f"{'nu':>5} {'f':>5} {'published':>10} {'before':>10} {'after':>10} {'diff':>10} {'seed_std':>9} {'diff/std':>8}")
     ratios, within = [], {"default": 0, "fast": 0}
     for cell in sorted(ensemble):
         if cell not in default:
@@ -67,9 +68,9 @@ def main(argv=None) -> int:
     changes = [abs(c_fast - c_default) / abs(c_default) for c_default, c_fast in celerities
                if c_default and not math.isnan(c_default) and not math.isnan(c_fast)]
     print()
-    print(f"published cells compared: {len(ratios)}; |fast - default| / seed std: median {statistics.median(ratios):.3f}, "
+    print(f"published cells compared: {len(ratios)}; |after - before| / seed std: median {statistics.median(ratios):.3f}, "
           f"max {max(ratios):.3f}; cells above 1: {sum(r > 1 for r in ratios)}")
-    print(f"published cells within {TOLERANCE:.0%}: default {within['default']}, fast {within['fast']}")
+    print(f"published cells within {TOLERANCE:.0%}: before {within['default']}, after {within['fast']}")
     print(f"whole grid: {len(default)} cells, same category {same_category}; relative celerity change "
           f"median {statistics.median(changes):.2e}, max {max(changes):.2e} over {len(changes)} measured cells")
     for c in changed:
