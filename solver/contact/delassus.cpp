@@ -7,8 +7,14 @@
 // FMA), which rounds once where the baseline code rounds twice. The clones then differ from the baseline
 // code only in vector width, which leaves every entry's operations and their order unchanged: a run gives
 // the same bits on every x86-64 CPU.
+// SLIDEWAVE_NO_AVX512 (CMake option of the same name) drops the AVX-512 clone: a build that runs here as an
+// AVX2-only machine would, to measure the speed such machines get (bench/whole_run.sh).
+#if SLIDEWAVE_NO_AVX512
+#define SLIDEWAVE_MULTIVERSIONED __attribute__((target_clones("avx2", "default"), optimize("fp-contract=off")))
+#else
 #define SLIDEWAVE_MULTIVERSIONED \
   __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
+#endif
 
 
 namespace slidewave {
