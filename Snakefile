@@ -27,9 +27,9 @@ check_overrides(config, os.path.join(workflow.basedir, "study/config.yaml"))
 configfile: os.path.join(workflow.basedir, "study/config.yaml")
 config.update(typed_numbers(config))  # --config passes nested numbers as strings
 # Every problem on one line naming the key and the allowed values (study/config_check.py).
-exit_on_errors(schema_errors(config, load_schema()), "study/config.yaml with --config/--configfile")
+exit_on_errors(schema_errors(config, load_schema()))
 validate(config, "study/config.schema.yaml")  # fills the defaults
-exit_on_errors(reference_errors(config, workflow.basedir), "study/config.yaml with --config/--configfile")
+exit_on_errors(reference_errors(config, workflow.basedir))
 
 # Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary.
 PYTHON = os.environ.get("SLIDEWAVE_PYTHON", "/usr/bin/python3")

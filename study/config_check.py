@@ -107,7 +107,7 @@ def reference_errors(config: dict, root: str | Path) -> list[str]:
     return messages
 
 
-def exit_on_errors(messages: list[str], source: str) -> None:
+def exit_on_errors(messages: list[str]) -> None:
     """Print the messages, one line each, and end the process with exit code 1.
 
     For the Snakefile: Snakemake prints any exception raised there with a traceback line, and
@@ -115,8 +115,7 @@ def exit_on_errors(messages: list[str], source: str) -> None:
     """
     if not messages:
         return
-    sys.stderr.write("".join(f"error: {message}\n" for message in messages)
-                     + f"(the study config: {source}; schema: {SCHEMA_PATH})\n")
+    sys.stderr.write("".join(f"error: {message}\n" for message in messages))
     sys.stderr.flush()
     sys.stdout.flush()
     os._exit(1)

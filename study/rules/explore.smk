@@ -21,7 +21,7 @@ if config.get("point") is not None:
         "maps": {"fields": EXPLORE_FIELDS},
     }
     # The point passed the schema; its combination with `defaults` may still not be a mesh.
-    exit_on_errors(reference_errors(config, REPO), "--config point=...")
+    exit_on_errors(reference_errors(config, REPO))
 
 
 def explore_point_name():
