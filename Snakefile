@@ -18,6 +18,7 @@ from snakemake.utils import min_version, validate
 
 min_version("7.21")
 sys.path.insert(0, workflow.basedir)
+from study.config_check import exit_on_errors, load_schema, reference_errors, schema_errors
 from study.config_overrides import check_overrides
 from study.sweeps import typed_numbers
 
@@ -25,7 +26,10 @@ from study.sweeps import typed_numbers
 check_overrides(config, os.path.join(workflow.basedir, "study/config.yaml"))
 configfile: os.path.join(workflow.basedir, "study/config.yaml")
 config.update(typed_numbers(config))  # --config passes nested numbers as strings
-validate(config, "study/config.schema.yaml")
+# Every problem on one line naming the key and the allowed values (study/config_check.py).
+exit_on_errors(schema_errors(config, load_schema()))
+validate(config, "study/config.schema.yaml")  # fills the defaults
+exit_on_errors(reference_errors(config, workflow.basedir))
 
 # Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary.
 PYTHON = os.environ.get("SLIDEWAVE_PYTHON", "/usr/bin/python3")

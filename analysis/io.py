@@ -4,8 +4,12 @@ This is the only module of the package that imports h5py. `load_run` checks `for
 anything else (format 1 is refused: rerun the solver), then that every root attribute, every
 derived constant in the `/setup` attributes and every dataset the analysis needs is present, has
 the promised shape and holds finite numbers; any problem is an `InputError` naming the file and the
-problem, and so is a dataset whose HDF5 checksum (Fletcher32) does not match. Snapshots are not read
-(the analysis needs only the interface and the global series).
+problem, and so is a dataset whose HDF5 checksum (Fletcher32) does not match, a damaged HDF5
+structure (h5py's KeyError, RuntimeError, OSError, ... on a broken object header or link) and a
+dataset whose declared shape is not the run's or would not fit in memory: shapes are checked before
+any data is read. Snapshots are not read (the analysis needs only the interface and the global series).
+Limit: a few damaged object headers crash the HDF5 library itself (a segmentation fault), which no
+reader in this process can catch.
 
 The constants are read, never recomputed: c_s, c_l, p0, dt, the onset estimate and the opening
 threshold are what the solver used (one definition, in the solver).
@@ -19,6 +23,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -133,13 +138,61 @@ def _is_number(value: Any) -> bool:
     return not isinstance(value, bool) and isinstance(value, (int, float)) and math.isfinite(value)
 
 
-def _read_dataset(file: Any, path: str, name: str) -> np.ndarray:
-    """The data of a dataset; a failing checksum (Fletcher32) or filter is an InputError."""
+def _available_bytes() -> int:
+    """Memory this process may still fill (MemAvailable of /proc/meminfo, else the physical memory)."""
+    try:
+        with open("/proc/meminfo") as stream:
+            for line in stream:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+
+
+def _dataset(file: Any, path: str, name: str) -> Any:
+    """The dataset node `name` (no data read)."""
     if name not in file:
         raise _fail(path, f"dataset '{name}' is missing (malformed run file)")
     node = file[name]
     if not hasattr(node, "shape"):
         raise _fail(path, f"'{name}' is a group, expected a dataset")
+    return node
+
+
+def _check_shapes(file: Any, path: str, n_c: int) -> None:
+    """Declared shapes (metadata only) against the run's: x (n_c,), t (n_out,), the interface fields
+    (n_out, n_c), the global series (n_steps,) with n_out <= n_steps, and all of them together within
+    the memory available, so that a file declaring a huge dataset is refused before it is read."""
+    shapes = {name: _dataset(file, path, name).shape
+              for name in [f"/interface/{n}" for n in ("x", "t") + _INTERFACE_FIELDS]
+              + [f"/global/{n}" for n in _GLOBAL_SERIES]}
+    if shapes["/interface/x"] != (n_c,):
+        raise _fail(path, f"/interface/x has shape {shapes['/interface/x']}, expected (n_c,) = ({n_c},) "
+                          "(lambda / h)")
+    n_out, n_steps = shapes["/interface/t"], shapes["/global/t"]
+    if len(n_out) != 1 or len(n_steps) != 1 or n_out[0] > n_steps[0]:
+        raise _fail(path, f"/interface/t has shape {n_out} and /global/t {n_steps}, expected (n_out,) and "
+                          "(n_steps,) with n_out <= n_steps")
+    for name in _INTERFACE_FIELDS:
+        if shapes[f"/interface/{name}"] != (n_out[0], n_c):
+            raise _fail(path, f"/interface/{name} has shape {shapes[f'/interface/{name}']}, expected "
+                              f"(n_out, n_c) = ({n_out[0]}, {n_c})")
+    bad = [name for name in _GLOBAL_SERIES if shapes[f"/global/{name}"] != n_steps]
+    if bad:
+        raise _fail(path, f"/global series of unequal or non-1-D shape: {', '.join(bad)} "
+                          f"(/global/t has shape {n_steps})")
+    needed = 8 * sum(math.prod(shape) for shape in shapes.values())  # read as float64
+    available = _available_bytes()
+    if needed > available:
+        raise _fail(path, f"its datasets declare {needed / 1e9:.3g} GB ({n_steps[0]} steps, {n_out[0]} "
+                          f"interface outputs x {n_c} nodes), more than the {available / 1e9:.3g} GB of "
+                          "memory available (a damaged file, or a run too large for this machine)")
+
+
+def _read_dataset(file: Any, path: str, name: str) -> np.ndarray:
+    """The data of a dataset; a failing checksum (Fletcher32) or filter is an InputError."""
+    node = _dataset(file, path, name)
     try:
         return np.asarray(node[()])
     except OSError as err:
@@ -243,55 +296,59 @@ def load_run(path: str | Path) -> RunData:
         file = h5py.File(path, "r")
     except OSError as err:
         raise _fail(path, f"not a readable HDF5 file ({err})") from None
-    with file:
-        # 1. The format version, before anything else.
-        _check_version(path, file.attrs)
-        # 2. Root attributes, /setup constants, config.
-        attrs, setup, config_input, config = _read_attributes(file, path)
-        finite_required = bool(attrs["complete"])
-        # 3. Interface fields.
-        x = _read_array(file, path, "/interface/x", True)[0].astype(float)
-        t = _read_array(file, path, "/interface/t", True)[0].astype(float)
-        if x.ndim != 1 or x.size < 3:
-            raise _fail(path, f"/interface/x has shape {x.shape}, expected (n_c,) with n_c >= 3")
-        if t.ndim != 1 or t.size < 1:
-            raise _fail(path, f"/interface/t has shape {t.shape}, expected (n_out,) with n_out >= 1")
-        steps = np.diff(x)
-        if np.any(steps <= 0) or np.max(np.abs(steps - steps.mean())) > 1e-6 * steps.mean():
-            raise _fail(path, "/interface/x is not uniformly spaced and increasing")
-        period = steps.mean() * x.size
-        if abs(period - setup["lambda"]) > 1e-6 * period:
-            raise _fail(path, f"/interface/x spans a period of {period:g} m, but lambda = "
-                              f"{setup['lambda']:g} m (x = lambda must be the node x = 0)")
-        if np.any(np.diff(t) <= 0):
-            raise _fail(path, "/interface/t is not strictly increasing")
-        fields, non_finite = {}, []
-        for name in _INTERFACE_FIELDS:
-            data, bad = _read_array(file, path, f"/interface/{name}", finite_required)
-            if data.shape != (t.size, x.size):
-                raise _fail(path, f"/interface/{name} has shape {data.shape}, expected "
-                                  f"(n_out, n_c) = ({t.size}, {x.size})")
-            fields[name] = data.astype(np.int8) if name == "state" else data.astype(float)
-            if bad:
-                non_finite.append(f"/interface/{name}")
-        interface = InterfaceFields(x=x, t=t, **fields)
-        # 4. Global series.
-        # T/N is NaN (undefined) exactly where the whole interface is open (N = 0), nowhere else.
-        series = {}
-        for name in _GLOBAL_SERIES:
-            data, bad = _read_array(file, path, f"/global/{name}", finite_required or name == "t",
-                                    allow_nan=name == "T_over_N")
-            series[name] = data.astype(float)
-            if bad:
-                non_finite.append(f"/global/{name}")
-        n_steps = series["t"].size
-        bad = [name for name, data in series.items() if data.shape != (n_steps,)]
-        if bad or n_steps < 1:
-            raise _fail(path, f"/global series of unequal or non-1-D shape: {', '.join(bad)} "
-                              f"(/global/t has {n_steps} values)")
-        undefined = np.isnan(series["T_over_N"])
-        if not non_finite and np.any(series["N"][undefined] != 0):
-            raise _fail(path, "dataset '/global/T_over_N' is NaN where N != 0")
+    try:
+        with file:
+            return _read_run(file, path)
+    except (KeyError, RuntimeError, OSError, TypeError, ValueError) as err:
+        # h5py's errors on a broken object header, link or attribute message.
+        raise _fail(path, f"damaged HDF5 structure ({type(err).__name__}: {err}); rerun the run or "
+                          "restore the file") from None
+
+
+def _read_run(file: Any, path: str) -> RunData:
+    """load_run's checks and reads on the open file."""
+    # 1. The format version, before anything else.
+    _check_version(path, file.attrs)
+    # 2. Root attributes, /setup constants, config.
+    attrs, setup, config_input, config = _read_attributes(file, path)
+    finite_required = bool(attrs["complete"])
+    _check_shapes(file, path, round(setup["lambda"] / setup["h"]))
+    # 3. Interface fields.
+    x = _read_array(file, path, "/interface/x", True)[0].astype(float)
+    t = _read_array(file, path, "/interface/t", True)[0].astype(float)
+    if x.size < 3:
+        raise _fail(path, f"/interface/x has shape {x.shape}, expected (n_c,) with n_c >= 3")
+    if t.size < 1:
+        raise _fail(path, f"/interface/t has shape {t.shape}, expected (n_out,) with n_out >= 1")
+    steps = np.diff(x)
+    if np.any(steps <= 0) or np.max(np.abs(steps - steps.mean())) > 1e-6 * steps.mean():
+        raise _fail(path, "/interface/x is not uniformly spaced and increasing")
+    period = steps.mean() * x.size
+    if abs(period - setup["lambda"]) > 1e-6 * period:
+        raise _fail(path, f"/interface/x spans a period of {period:g} m, but lambda = "
+                          f"{setup['lambda']:g} m (x = lambda must be the node x = 0)")
+    if np.any(np.diff(t) <= 0):
+        raise _fail(path, "/interface/t is not strictly increasing")
+    fields, non_finite = {}, []
+    for name in _INTERFACE_FIELDS:
+        data, bad = _read_array(file, path, f"/interface/{name}", finite_required)
+        fields[name] = data.astype(np.int8) if name == "state" else data.astype(float)
+        if bad:
+            non_finite.append(f"/interface/{name}")
+    interface = InterfaceFields(x=x, t=t, **fields)
+    # 4. Global series.
+    # T/N is NaN (undefined) exactly where the whole interface is open (N = 0), nowhere else.
+    series = {}
+    for name in _GLOBAL_SERIES:
+        data, bad = _read_array(file, path, f"/global/{name}", finite_required or name == "t",
+                                allow_nan=name == "T_over_N")
+        series[name] = data.astype(float)
+        if bad:
+            non_finite.append(f"/global/{name}")
+    if series["t"].size < 1:
+        raise _fail(path, "/global/t is empty")
+    undefined = np.isnan(series["T_over_N"])
+    if not non_finite and np.any(series["N"][undefined] != 0):
+        raise _fail(path, "dataset '/global/T_over_N' is NaN where N != 0")
     return RunData(path=path, attrs=attrs, setup=setup, config_input=config_input, config=config,
-                   interface=interface, global_series=GlobalSeries(**series),
-                   non_finite=tuple(non_finite))
+                   interface=interface, global_series=GlobalSeries(**series), non_finite=tuple(non_finite))

@@ -64,17 +64,42 @@ def point_name(point: dict) -> str:
     return name
 
 
+def _csv_value(key: str, text: str):
+    """A CSV cell as the point parameter's type; ValueError when it does not spell one."""
+    if key == "integration":
+        return text
+    return int(text) if key in ("elements_per_H", "seed") else float(text)
+
+
 def _csv_points(path: Path) -> list[dict]:
-    """Rows of a CSV as points, keeping only columns that are point parameters (e.g. nu, f)."""
+    """Rows of a CSV as points, keeping only columns that are point parameters (e.g. nu, f).
+
+    Each value is checked like a point of the config (study/config.schema.yaml): a row is as good as
+    a line of config, and its values become run names and words of commands.
+
+    Raises
+    ------
+    ValueError
+        A value the schema refuses, naming the file, row (line of the file) and column.
+    """
+    from study.config_check import load_schema, value_error
+
+    schema = load_schema()
     with open(path, newline="") as stream:
         rows = list(csv.DictReader(stream))
     points = []
-    for row in rows:
+    for line, row in enumerate(rows, start=2):
         point = {}
-        for key, value in row.items():
-            if key in POINT_KEYS:
-                point[key] = int(value) if key in ("elements_per_H", "seed") else (
-                    value if key == "integration" else float(value))
+        for key, text in row.items():
+            if key not in POINT_KEYS:
+                continue
+            try:
+                point[key] = _csv_value(key, text)
+                problem = value_error(point[key], schema["definitions"][key], schema)
+            except (TypeError, ValueError):
+                problem = value_error(text, schema["definitions"][key], schema)
+            if problem:
+                raise ValueError(f"{path}, row {line}, column {key}: {text!r} is not allowed; allowed: {problem}")
         points.append(point)
     return points
 

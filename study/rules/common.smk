@@ -4,7 +4,6 @@
 import functools
 import json
 import re
-import shlex
 from pathlib import Path
 
 REPO = Path(workflow.basedir).resolve()  # on sys.path (the Snakefile's folder)
@@ -136,12 +135,12 @@ def study_files(files_of):
 
 
 def table_select(pts, highlight=None):
-    """`--select KEY=VALUE ...` so that at most one run falls on each (nu, f) cell of Table 1: every
+    """[`--select`, `KEY=VALUE`, ...] so that at most one run falls on each (nu, f) cell of Table 1: every
     other parameter that varies across the points takes the `highlight` point's value, else the
     study default (e.g. the shear-rate sweep's table is the V0/c_s = 1e-5 run)."""
     keys = [k for k in study_sweeps.varying_keys(pts) if k not in ("nu", "f")]
     wanted = {**config["defaults"], **(highlight or {})}
-    return " ".join(f"--select {k}={wanted[k]}" for k in keys)
+    return [word for k in keys for word in ("--select", f"{k}={wanted[k]}")]
 
 
 def has_default_run_settings(sweep):
@@ -163,19 +162,19 @@ def study_points():
 
 
 def tn_labels(sweep):
-    """Legend texts of a sweep's T/N curves: the parameters that vary across it, shell-quoted."""
+    """Legend texts of a sweep's T/N curves: the parameters that vary across it."""
     pts = points(sweep)
     keys = study_sweeps.varying_keys(pts)
-    return " ".join(shlex.quote(study_sweeps.label(p, keys)) for p in pts.values())
+    return [study_sweeps.label(p, keys) for p in pts.values()]
 
 
 def tn_highlight(sweep):
-    """`--highlight INDEX` for the sweep's `highlight` point, or nothing."""
+    """[`--highlight`, INDEX] for the sweep's `highlight` point, or nothing."""
     match = sweep_spec(sweep).get("highlight")
     if match is None:
-        return ""
+        return []
     name = study_sweeps.find_point(points(sweep), match, f"sweeps.{sweep}.highlight")
-    return f"--highlight {list(points(sweep)).index(name)}"
+    return ["--highlight", list(points(sweep)).index(name)]
 
 
 def convergence_param(sweep):

@@ -20,6 +20,8 @@ if config.get("point") is not None:
         "products": ["spacetime", "tn_curves"],
         "maps": {"fields": EXPLORE_FIELDS},
     }
+    # The point passed the schema; its combination with `defaults` may still not be a mesh.
+    exit_on_errors(reference_errors(config, REPO))
 
 
 def explore_point_name():
@@ -47,8 +49,8 @@ rule explore_phase:
     params: prefix="results/explore/figures/explore_phase"
     log: "results/explore/logs/explore_phase.log"
     shell:
-        "{PYTHON} {input.script} {input.metrics} --reference {input.reference} --flutter {input.flutter}"
-        " --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.metrics:q} --reference {input.reference:q} --flutter {input.flutter:q}"
+        " --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule explore_summary:
@@ -63,5 +65,5 @@ rule explore_summary:
     output: "results/explore/summary.html"
     log: "results/explore/logs/summary.log"
     shell:
-        "{PYTHON} {input.script} --metrics {input.metrics} --figures {input.phase} {input.tn} {input.maps}"
-        " --out {output} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} --metrics {input.metrics:q} --figures {input.phase:q} {input.tn:q} {input.maps:q}"
+        " --out {output:q} > {log:q} 2>&1"

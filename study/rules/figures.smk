@@ -16,8 +16,8 @@ rule fig_spacetime:
     params: prefix="results/{sweep}/figures/spacetime_{field}_{point}"
     log: "results/{sweep}/logs/fig_spacetime_{field}_{point}.log"
     shell:
-        "{PYTHON} {input.script} {input.run} --field {wildcards.field} --metrics {input.metrics}"
-        " --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.run:q} --field {wildcards.field:q} --metrics {input.metrics:q}"
+        " --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_tn_curves:
@@ -32,8 +32,8 @@ rule fig_tn_curves:
         highlight=lambda wc: tn_highlight(wc.sweep),
     log: "results/{sweep}/logs/fig_tn_curves.log"
     shell:
-        "{PYTHON} {input.script} {input.runs} --labels {params.labels} {params.highlight}"
-        " --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.runs:q} --labels {params.labels:q} {params.highlight:q}"
+        " --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_tn_aligned:
@@ -49,8 +49,8 @@ rule fig_tn_aligned:
         highlight=lambda wc: tn_highlight(wc.sweep),
     log: "results/{sweep}/logs/fig_tn_aligned.log"
     shell:
-        "{PYTHON} {input.script} {input.runs} --metrics {input.metrics} --labels {params.labels}"
-        " {params.highlight} --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.runs:q} --metrics {input.metrics:q} --labels {params.labels:q}"
+        " {params.highlight:q} --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_snapshots:
@@ -61,7 +61,7 @@ rule fig_snapshots:
     output: multiext("results/{sweep}/figures/snapshots_{point}", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/snapshots_{point}"
     log: "results/{sweep}/logs/fig_snapshots_{point}.log"
-    shell: "{PYTHON} {input.script} {input.run} --out {params.prefix} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.run:q} --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_phase_diagram:
@@ -76,8 +76,8 @@ rule fig_phase_diagram:
     params: prefix="results/{sweep}/figures/phase_diagram"
     log: "results/{sweep}/logs/fig_phase_diagram.log"
     shell:
-        "{PYTHON} {input.script} {input.metrics} --flutter {input.flutter} --published {input.table}"
-        " --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.metrics:q} --flutter {input.flutter:q} --published {input.table:q}"
+        " --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_celerity_vs_nu:
@@ -88,7 +88,7 @@ rule fig_celerity_vs_nu:
     output: multiext("results/{sweep}/figures/celerity_vs_nu", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/celerity_vs_nu"
     log: "results/{sweep}/logs/fig_celerity_vs_nu.log"
-    shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.table:q} --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_deviation_map:
@@ -99,7 +99,7 @@ rule fig_deviation_map:
     output: multiext("results/{sweep}/figures/deviation_map", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/deviation_map"
     log: "results/{sweep}/logs/fig_deviation_map.log"
-    shell: "{PYTHON} {input.script} {input.table} --out {params.prefix} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.table:q} --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_pulse_spacing:
@@ -110,7 +110,7 @@ rule fig_pulse_spacing:
     output: multiext("results/{sweep}/figures/pulse_spacing", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/pulse_spacing"
     log: "results/{sweep}/logs/fig_pulse_spacing.log"
-    shell: "{PYTHON} {input.script} {input.metrics} --out {params.prefix} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.metrics:q} --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule fig_convergence:
@@ -124,4 +124,4 @@ rule fig_convergence:
         param=lambda wc: convergence_param(wc.sweep),
     log: "results/{sweep}/logs/fig_convergence.log"
     shell:
-        "{PYTHON} {input.script} {input.metrics} --param {params.param} --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.metrics:q} --param {params.param:q} --out {params.prefix:q} > {log:q} 2>&1"

@@ -43,7 +43,7 @@ rule movie_configure:
     output: "results/movies/{movie}/config.json"
     params: spec=lambda wc: json.dumps(movie_spec(wc.movie), sort_keys=True)
     log: "results/movies/{movie}/logs/configure.log"
-    shell: "{PYTHON} -m study.make_run_config --spec {params.spec:q} -o {output} 2> {log}"
+    shell: "{PYTHON:q} -m study.make_run_config --spec {params.spec:q} -o {output:q} 2> {log:q}"
 
 
 rule movie_simulate:
@@ -55,8 +55,8 @@ rule movie_simulate:
     log: "results/movies/{movie}/logs/simulate.log"
     benchmark: "results/movies/{movie}/logs/simulate.benchmark.tsv"
     threads: 1
-    shell: "status=0; {input.solver} run {input.config} -o {output} --threads {threads} > {log} 2>&1 || status=$?;"
-           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output} ]; }}"
+    shell: "status=0; {input.solver:q} run {input.config:q} -o {output:q} --threads {threads:q} > {log:q} 2>&1 || status=$?;"
+           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output:q} ]; }}"
 
 
 rule movie_render:
@@ -69,4 +69,4 @@ rule movie_render:
     params: fps=lambda wc: config["movies"]["frame_rate"]
     log: "results/movies/{movie}/logs/render.log"
     benchmark: "results/movies/{movie}/logs/render.benchmark.tsv"
-    shell: "{PYTHON} {input.script} {input.run} --fps {params.fps} --out {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.run:q} --fps {params.fps:q} --out {output:q} > {log:q} 2>&1"

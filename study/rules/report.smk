@@ -1,12 +1,14 @@
 # Study reports (our own HTML: Snakemake 7.21's --report needs internet) and the LaTeX paper.
 
+REPORT_SCRIPT = repo_path("study/scripts/report.py")
+
 localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper, energy_evidence_config,
     paper_energy_evidence, paper_claims
 
 
 def report_inputs(sweeps):
     """Everything a report shows: tables, comparisons, PNG figures, and each run's files."""
-    files = [repo_path("study/scripts/report.py")]
+    files = [REPORT_SCRIPT]
     for sweep in sweeps:
         files += [f for f in sweep_products(sweep, with_report=False) if not f.endswith(".pdf")]
         for name in ("config.json", "metrics.json", "logs/simulate.benchmark.tsv"):
@@ -37,7 +39,7 @@ rule sweep_report:
     output: "results/{sweep}/report.html"
     params: manifest=lambda wc: report_manifest(f"slidewave: sweep {wc.sweep}", [wc.sweep])
     log: "results/{sweep}/logs/report.log"
-    shell: "{PYTHON} {REPO}/study/scripts/report.py --manifest {params.manifest:q} --out {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {REPORT_SCRIPT:q} --manifest {params.manifest:q} --out {output:q} > {log:q} 2>&1"
 
 
 rule report:
@@ -46,7 +48,7 @@ rule report:
     output: "results/report.html"
     params: manifest=lambda wc: report_manifest("slidewave: reproduction of Yastrebov (2016)", config["study"])
     log: "logs/report.log"
-    shell: "{PYTHON} {REPO}/study/scripts/report.py --manifest {params.manifest:q} --out {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {REPORT_SCRIPT:q} --manifest {params.manifest:q} --out {output:q} > {log:q} 2>&1"
 
 
 PAPER_PDF = "paper/reproduction.pdf"
@@ -67,7 +69,7 @@ rule paper_figure:
     output: "paper/generated/{name}.pdf"
     wildcard_constraints: name="|".join(config["paper"]["figures"]) or "no-figure"
     log: "logs/paper_figure_{name}.log"
-    shell: "cp {input} {output} 2> {log}"
+    shell: "cp {input:q} {output:q} 2> {log:q}"
 
 
 def numbers_spec():
@@ -103,16 +105,16 @@ rule paper_numbers:
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
     params:
-        cell=f"{config['defaults']['nu']} {config['defaults']['f']}",
-        sweeps=lambda wc: " ".join(f"--sweep {role} {swept_parameter(sweep)} results/{sweep}/table/all_metrics.csv"
-                                   for role, sweep in numbers_spec()["sweeps"].items()),
-        meshes=lambda wc: " ".join(shlex.quote(f"--other-mesh={label}=results/{sweep}/table/table1.csv")
-                                   for label, sweep in numbers_spec().get("meshes", {}).items()),
+        cell=[config['defaults']['nu'], config['defaults']['f']],
+        sweeps=lambda wc: [word for role, sweep in numbers_spec()["sweeps"].items() for word in
+                           ("--sweep", role, swept_parameter(sweep), f"results/{sweep}/table/all_metrics.csv")],
+        meshes=lambda wc: [f"--other-mesh={label}=results/{sweep}/table/table1.csv"
+                           for label, sweep in numbers_spec().get("meshes", {}).items()],
     log: "logs/paper_numbers.log"
     shell:
-        "({PYTHON} {input.numbers_script} --summary {input.summary} --runs {input.runs} --grid {input.grid}"
-        " --table1 {input.table} --reference-cell {params.cell} {params.sweeps} -o {output.numbers}"
-        " && {PYTHON} {input.table_script} {input.table} {params.meshes} -o {output.table}) > {log} 2>&1"
+        "({PYTHON:q} {input.numbers_script:q} --summary {input.summary:q} --runs {input.runs:q} --grid {input.grid:q}"
+        " --table1 {input.table:q} --reference-cell {params.cell:q} {params.sweeps:q} -o {output.numbers:q}"
+        " && {PYTHON:q} {input.table_script:q} {input.table:q} {params.meshes:q} -o {output.table:q}) > {log:q} 2>&1"
 
 
 rule paper_variants:
@@ -122,10 +124,9 @@ rule paper_variants:
         summaries=[f"results/{sweep}/table/summary.json" for sweep in config["paper"]["variants"].values()],
     output: "paper/generated/variants.tex"
     params:
-        pairs=" ".join(shlex.quote(f"{label}=results/{sweep}/table/summary.json")
-                       for label, sweep in config["paper"]["variants"].items())
+        pairs=[f"{label}=results/{sweep}/table/summary.json" for label, sweep in config["paper"]["variants"].items()]
     log: "logs/paper_variants.log"
-    shell: "{PYTHON} {input.script} {params.pairs} -o {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {params.pairs:q} -o {output:q} > {log:q} 2>&1"
 
 
 def claim_tables():
@@ -153,13 +154,14 @@ rule paper_claims:
         verdicts="paper/generated/claims.json",
     params:
         tolerance=config["reference"]["tolerance"],
-        tables=lambda wc: " ".join(shlex.quote(f"--table={name}={path}") for name, path in claim_tables().items()),
-        meshes=lambda wc: " ".join(shlex.quote(f"--mesh-table={label}=results/{sweep}/table/table1.csv")
-                                   for label, sweep in numbers_spec().get("meshes", {}).items()),
+        tables=lambda wc: [f"--table={name}={path}" for name, path in claim_tables().items()],
+        meshes=lambda wc: [f"--mesh-table={label}=results/{sweep}/table/table1.csv"
+                           for label, sweep in numbers_spec().get("meshes", {}).items()],
     log: "logs/paper_claims.log"
     shell:
-        "{PYTHON} {input.script} --claims {input.claims} --tolerance {params.tolerance} {params.tables} {params.meshes}"
-        " -o {output.table} --conclusions {output.conclusions} --json {output.verdicts} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} --claims {input.claims:q} --tolerance {params.tolerance:q} {params.tables:q}"
+        " {params.meshes:q} -o {output.table:q} --conclusions {output.conclusions:q} --json {output.verdicts:q}"
+        " > {log:q} 2>&1"
 
 
 ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of paper/make_energy_evidence.py
@@ -181,7 +183,7 @@ rule energy_evidence_config:
     output: "results/energy_evidence/{name}.json"
     wildcard_constraints: name="|".join(ENERGY_RUNS)
     params: text=lambda wc: json.dumps(energy_evidence_config(wc.name), sort_keys=True)
-    shell: "printf '%s\\n' {params.text:q} > {output}"
+    shell: "printf '%s\\n' {params.text:q} > {output:q}"
 
 
 rule energy_evidence_run:
@@ -194,7 +196,7 @@ rule energy_evidence_run:
     log: "results/energy_evidence/logs/{name}.log"
     threads: 1
     resources: mem_mb=1000, runtime=10
-    shell: "{input.solver} run {input.config} -o {output} --threads 1 > {log} 2>&1"
+    shell: "{input.solver:q} run {input.config:q} -o {output:q} --threads 1 > {log:q} 2>&1"
 
 
 rule paper_energy_evidence:
@@ -204,9 +206,9 @@ rule paper_energy_evidence:
         script="paper/make_energy_evidence.py",
         runs=expand("results/energy_evidence/{name}.h5", name=ENERGY_RUNS),
     output: "paper/generated/energy_evidence.tex"
-    params: runs=lambda wc, input: " ".join(f"--{name.replace('_', '-')} {path}" for name, path in zip(ENERGY_RUNS, input.runs))
+    params: runs=lambda wc, input: [w for name, path in zip(ENERGY_RUNS, input.runs) for w in (f"--{name.replace('_', '-')}", path)]
     log: "logs/paper_energy_evidence.log"
-    shell: "{PYTHON} {input.script} {params.runs} -o {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {params.runs:q} -o {output:q} > {log:q} 2>&1"
 
 
 def paper_table_job(name):
@@ -215,11 +217,11 @@ def paper_table_job(name):
     spec = config["paper"]["tables"][name]
     if spec["resolution"]:
         return dict(script="paper/make_resolution_table.py", table="table1.csv",
-                    options=f"--tolerance {config['reference']['tolerance']}", sets=list(spec["sets"].items()))
+                    options=["--tolerance", config['reference']['tolerance']], sets=list(spec["sets"].items()))
     if not spec.get("columns"):
         raise ValueError(f"paper.tables.{name}: a sweep table needs `columns`")
     return dict(script="paper/make_sweep_table.py", table="all_metrics.csv",
-                options="--columns " + " ".join(spec["columns"]), sets=list(spec["sets"].items()))
+                options=["--columns", *spec["columns"]], sets=list(spec["sets"].items()))
 
 
 rule paper_table:
@@ -231,11 +233,11 @@ rule paper_table:
     output: "paper/generated/{name}.tex"
     wildcard_constraints: name="|".join(config["paper"]["tables"]) or "no-table"
     params:
-        sets=lambda wc, input: " ".join(shlex.quote(f"{label}={path}")
-                                        for (label, _), path in zip(paper_table_job(wc.name)["sets"], input.tables)),
+        sets=lambda wc, input: [f"{label}={path}" for (label, _), path in
+                                zip(paper_table_job(wc.name)["sets"], input.tables)],
         options=lambda wc: paper_table_job(wc.name)["options"],
     log: "logs/paper_table_{name}.log"
-    shell: "{PYTHON} {input.script} {params.sets} {params.options} -o {output} > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {params.sets:q} {params.options:q} -o {output:q} > {log:q} 2>&1"
 
 
 rule paper:
@@ -259,6 +261,6 @@ rule paper:
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:
-        "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex}"
-        " && {PYTHON} {input.check} paper/reproduction.log --numbers {input.numbers} --numbers {input.energy})"
-        " > {log} 2>&1"
+        "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex:q}"
+        " && {PYTHON:q} {input.check:q} paper/reproduction.log --numbers {input.numbers:q} --numbers {input.energy:q})"
+        " > {log:q} 2>&1"

@@ -16,7 +16,7 @@ if "SLIDEWAVE_BIN" not in os.environ:
         threads: 2
         shell:
             "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release"
-            " && cmake --build build --target slidewave -j{threads}) > {log} 2>&1"
+            " && cmake --build build --target slidewave -j{threads:q}) > {log:q} 2>&1"
 
 
 rule configure:
@@ -24,7 +24,7 @@ rule configure:
     output: "results/{sweep}/{point}/config.json"
     params: spec=lambda wc: json.dumps(run_spec(wc.sweep, wc.point), sort_keys=True)
     log: "results/{sweep}/{point}/logs/configure.log"
-    shell: "{PYTHON} -m study.make_run_config --spec {params.spec:q} -o {output} 2> {log}"
+    shell: "{PYTHON:q} -m study.make_run_config --spec {params.spec:q} -o {output:q} 2> {log:q}"
 
 
 rule simulate:
@@ -45,10 +45,10 @@ rule simulate:
     # (only RUN.partial.h5 and the checkpoint beside run.h5, which the next attempt resumes from),
     # 4 I/O error, a crash. An interrupted run is therefore never an output of this rule; the trap keeps
     # it so also when the job itself is signalled (Snakemake stopped, a scheduler's time limit).
-    shell: "trap 'rm -f {output}; exit 143' TERM INT; status=0; {input.solver} run {input.config} -o {output} --threads {threads} --resume"
-           " > {log} 2>&1 || status=$?;"
-           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output} ]; }}"
-           " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log}; rm -f {output}; exit 1; }}"
+    shell: "trap \"rm -f {output:q}; exit 143\" TERM INT; status=0; {input.solver:q} run {input.config:q} -o {output:q} --threads {threads:q} --resume"
+           " > {log:q} 2>&1 || status=$?;"
+           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output:q} ]; }}"
+           " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log:q}; rm -f {output:q}; exit 1; }}"
 
 
 rule measure:
@@ -57,4 +57,4 @@ rule measure:
     output: "results/{sweep}/{point}/metrics.json"
     log: "results/{sweep}/{point}/logs/measure.log"
     resources: mem_mb=2000, runtime=10
-    shell: "{PYTHON} -m analysis measure {input} -o {output} > {log} 2>&1"
+    shell: "{PYTHON:q} -m analysis measure {input:q} -o {output:q} > {log:q} 2>&1"

@@ -21,8 +21,8 @@ rule aggregate:
         select=lambda wc: table_select(points(wc.sweep), sweep_spec(wc.sweep).get("highlight")),
     log: "results/{sweep}/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
-        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
+        "{PYTHON:q} -m analysis aggregate {input.metrics:q} --reference {input.reference:q} --flutter {input.flutter:q}"
+        " --tolerance {params.tolerance:q} {params.select:q} -o {params.directory:q} > {log:q} 2>&1"
 
 
 rule aggregate_study:
@@ -39,8 +39,8 @@ rule aggregate_study:
         select=lambda wc: table_select({name: point for name, (_, point) in study_points().items()}),
     log: "results/study/logs/aggregate.log"
     shell:
-        "{PYTHON} -m analysis aggregate {input.metrics} --reference {input.reference} --flutter {input.flutter}"
-        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
+        "{PYTHON:q} -m analysis aggregate {input.metrics:q} --reference {input.reference:q} --flutter {input.flutter:q}"
+        " --tolerance {params.tolerance:q} {params.select:q} -o {params.directory:q} > {log:q} 2>&1"
 
 
 rule compare:
@@ -53,9 +53,9 @@ rule compare:
     params: tolerance=config["reference"]["tolerance"]
     log: "results/{sweep}/logs/compare.log"
     shell:
-        "status=0; {PYTHON} -m analysis compare {input.table} --reference {input.reference}"
-        " --tolerance {params.tolerance} --min-within 0 > {output} 2> {log} || status=$?;"
-        " echo \"compare exit status: $status\" >> {output}"
+        "status=0; {PYTHON:q} -m analysis compare {input.table:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} --min-within 0 > {output:q} 2> {log:q} || status=$?;"
+        " echo \"compare exit status: $status\" >> {output:q}"
 
 
 def ratchet_min_within(wildcards, input):
@@ -73,7 +73,7 @@ def ratchet_known_mismatches(wildcards, input):
     """--known-mismatch options for the cells whose wrong sign or regime the ratchet file records."""
     with open(input.ratchet) as stream:
         known = json.load(stream).get("known_mismatches", {})
-    return " ".join(f"--known-mismatch '{cell}'" for cell in known)
+    return [word for cell in known for word in ("--known-mismatch", cell)]
 
 
 rule reference_check:
@@ -90,9 +90,9 @@ rule reference_check:
         known=ratchet_known_mismatches,
     log: f"results/{config['reference']['check_sweep']}/logs/reference_check.log"
     shell:
-        "{PYTHON} -m analysis compare {input.table} --reference {input.reference}"
-        " --tolerance {params.tolerance} --min-within {params.min_within} --ratchet {params.known} > {log} 2>&1"
-        " && cp {log} {output}"
+        "{PYTHON:q} -m analysis compare {input.table:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} --min-within {params.min_within:q} --ratchet {params.known:q} > {log:q} 2>&1"
+        " && cp {log:q} {output:q}"
 
 
 def rule_score_points():
@@ -122,16 +122,16 @@ rule rule_scores:
         select=table_select(RULE_SCORES_POINTS),
     log: f"results/{RULE_SCORES_SWEEP}/logs/rule_scores.log"
     shell:
-        "{PYTHON} -m analysis score-rules {input.metrics} --reference {input.reference}"
-        " --tolerance {params.tolerance} {params.select} -o {params.directory} > {log} 2>&1"
+        "{PYTHON:q} -m analysis score-rules {input.metrics:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} {params.select:q} -o {params.directory:q} > {log:q} 2>&1"
 
 
 rule flutter:
     """Flutter wedge of steady sliding on a rigid flat (Martins et al. 1995), from analysis.flutter."""
     output: "results/theory/flutter.txt"
-    params: nu=" ".join(f"{nu:.6g}" for nu in flutter_nu())
+    params: nu=[f"{nu:.6g}" for nu in flutter_nu()]
     log: "results/theory/logs/flutter.log"
-    shell: "{PYTHON} -m analysis flutter-boundary --nu {params.nu} > {output} 2> {log}"
+    shell: "{PYTHON:q} -m analysis flutter-boundary --nu {params.nu:q} > {output:q} 2> {log:q}"
 
 
 # study/results/: the committed copy of the study's small tables (no HDF5), written only by this rule.
@@ -151,7 +151,7 @@ rule publish_table:
     output: repo_path("study/results/{sweep}/{name}")
     wildcard_constraints: name="|".join(re.escape(n) for n in PUBLISHED_TABLES)
     log: "results/{sweep}/logs/publish_{name}.log"
-    shell: "cp {input} {output} 2> {log}"
+    shell: "cp {input:q} {output:q} 2> {log:q}"
 
 
 rule publish_results:
@@ -180,7 +180,7 @@ def envelope_spec(wildcards, input):
         variant["table"] = f"results/{entry['sweep']}/table/all_metrics.csv"
         variant["base"] = f"results/{entry['base']}/table/all_metrics.csv"
         variants.append(variant)
-    return shlex.quote(json.dumps({"variants": variants}))
+    return json.dumps({"variants": variants})
 
 
 def envelope_tables():
@@ -201,8 +201,8 @@ rule ensemble_table:
         tolerance=config["reference"]["tolerance"],
     log: "results/{sweep}/logs/ensemble.log"
     shell:
-        "{PYTHON} -m analysis.ensemble {input.metrics} --reference {input.reference}"
-        " --tolerance {params.tolerance} -o {params.directory} > {log} 2>&1"
+        "{PYTHON:q} -m analysis.ensemble {input.metrics:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} -o {params.directory:q} > {log:q} 2>&1"
 
 
 rule fig_phase_diagram_ensemble:
@@ -215,8 +215,8 @@ rule fig_phase_diagram_ensemble:
     params: prefix="results/{sweep}/figures/phase_diagram_ensemble"
     log: "results/{sweep}/logs/fig_phase_diagram_ensemble.log"
     shell:
-        "{PYTHON} {input.script} {input.ensemble} --ensemble --flutter {input.flutter}"
-        " --out {params.prefix} > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.ensemble:q} --ensemble --flutter {input.flutter:q}"
+        " --out {params.prefix:q} > {log:q} 2>&1"
 
 
 rule envelope:
@@ -231,8 +231,8 @@ rule envelope:
         tolerance=config["reference"]["tolerance"],
     log: "results/envelope/logs/envelope.log"
     shell:
-        "{PYTHON} -m analysis.envelope --ensemble {input.ensemble} --spec {params.spec}"
-        " --tolerance {params.tolerance} -o results/envelope > {log} 2>&1"
+        "{PYTHON:q} -m analysis.envelope --ensemble {input.ensemble:q} --spec {params.spec:q}"
+        " --tolerance {params.tolerance:q} -o results/envelope > {log:q} 2>&1"
 
 
 rule fig_envelope:
@@ -245,8 +245,8 @@ rule fig_envelope:
         tolerance=config["reference"]["tolerance"],
     log: "results/envelope/logs/fig_envelope.log"
     shell:
-        "{PYTHON} {input.script} {input.table} --tolerance {params.tolerance}"
-        " --out results/envelope/envelope > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.table:q} --tolerance {params.tolerance:q}"
+        " --out results/envelope/envelope > {log:q} 2>&1"
 
 
 def finer_ensemble():
@@ -262,8 +262,8 @@ def finer_ensemble():
 
 def finer_ensemble_option(wildcards, input):
     if not input.finer:
-        return ""
-    return f"--finer-ensemble {input.finer} --finer-mesh {finer_ensemble()[1]}"
+        return []
+    return ["--finer-ensemble", *input.finer, "--finer-mesh", finer_ensemble()[1]]
 
 
 HOW_SURE_FILES = ["paper/generated/how_sure_numbers.tex", "paper/generated/ensemble.tex",
@@ -291,13 +291,13 @@ rule paper_how_sure:
     params: finer=finer_ensemble_option
     log: "logs/paper_how_sure.log"
     shell:
-        "({PYTHON} {input.script} --ensemble {input.ensemble} --envelope {input.envelope} {params.finer}"
+        "({PYTHON:q} {input.script:q} --ensemble {input.ensemble:q} --envelope {input.envelope:q} {params.finer:q}"
         " -o paper/generated/how_sure_numbers.tex"
-        " && cp {input.ensemble_table} paper/generated/ensemble.tex"
-        " && cp {input.envelope_table} paper/generated/envelope.tex"
-        " && cp {input.figure} paper/generated/envelope.pdf"
-        " && cp {input.phase_diagram} paper/generated/phase_diagram_ensemble.pdf"
-        " && cp {input.rule_scores} paper/generated/rule_scores.tex) > {log} 2>&1"
+        " && cp {input.ensemble_table:q} paper/generated/ensemble.tex"
+        " && cp {input.envelope_table:q} paper/generated/envelope.tex"
+        " && cp {input.figure:q} paper/generated/envelope.pdf"
+        " && cp {input.phase_diagram:q} paper/generated/phase_diagram_ensemble.pdf"
+        " && cp {input.rule_scores:q} paper/generated/rule_scores.tex) > {log:q} 2>&1"
 
 
 # --------------------------------------------------------------------------------------------------
@@ -329,8 +329,7 @@ def timeline_runs(label):
 
 
 def timeline_set_options(wildcards):
-    return " ".join(f"--set {shlex.quote(label)} " + " ".join(timeline_runs(label))
-                    for label in LIMITS["timeline"]["sets"])
+    return [word for label in LIMITS["timeline"]["sets"] for word in ("--set", label, *timeline_runs(label))]
 
 
 rule mesh_limit:
@@ -341,12 +340,12 @@ rule mesh_limit:
         reference=repo_path(config["reference"]["table"]),
     output: [f"results/limits/{name}" for name in MESH_LIMIT_TABLES]
     params:
-        meshes=" ".join(f"--mesh {n}={metrics_table(sweep)}" for n, sweep in LIMITS.get("meshes", {}).items()),
+        meshes=[word for n, sweep in LIMITS.get("meshes", {}).items() for word in ("--mesh", f"{n}={metrics_table(sweep)}")],
         tolerance=config["reference"]["tolerance"],
     log: "results/limits/logs/mesh_limit.log"
     shell:
-        "{PYTHON} -m analysis.mesh_limit {params.meshes} --reference {input.reference}"
-        " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
+        "{PYTHON:q} -m analysis.mesh_limit {params.meshes:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} -o results/limits > {log:q} 2>&1"
 
 
 rule timestep_limit:
@@ -359,8 +358,8 @@ rule timestep_limit:
     params: tolerance=config["reference"]["tolerance"]
     log: "results/limits/logs/timestep_limit.log"
     shell:
-        "{PYTHON} -m analysis.timestep_limit {input.tables} --reference {input.reference}"
-        " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
+        "{PYTHON:q} -m analysis.timestep_limit {input.tables:q} --reference {input.reference:q}"
+        " --tolerance {params.tolerance:q} -o results/limits > {log:q} 2>&1"
 
 
 rule timeline:
@@ -371,16 +370,16 @@ rule timeline:
     output: [f"results/limits/{name}" for name in TIMELINE_TABLES]
     params: sets=timeline_set_options
     log: "results/limits/logs/timeline.log"
-    shell: "{PYTHON} -m analysis.timeline {params.sets} -o results/limits > {log} 2>&1"
+    shell: "{PYTHON:q} -m analysis.timeline {params.sets:q} -o results/limits > {log:q} 2>&1"
 
 
 rule pulse_seeds:
     """`python3 -m analysis.pulse_seeds`: major-pulse counts per lambda/H across seeds, later drops."""
     input: [metrics_table(sweep) for sweep in LIMITS.get("pulses", [])]
     output: [f"results/limits/{name}" for name in PULSE_SEEDS_TABLES]
-    params: cell=lambda wc: f"{LIMITS['timeline']['cell']['nu']} {LIMITS['timeline']['cell']['f']}"
+    params: cell=lambda wc: [LIMITS['timeline']['cell']['nu'], LIMITS['timeline']['cell']['f']]
     log: "results/limits/logs/pulse_seeds.log"
-    shell: "{PYTHON} -m analysis.pulse_seeds {input} --cell {params.cell} -o results/limits > {log} 2>&1"
+    shell: "{PYTHON:q} -m analysis.pulse_seeds {input:q} --cell {params.cell:q} -o results/limits > {log:q} 2>&1"
 
 
 rule fig_mesh_limit:
@@ -392,8 +391,8 @@ rule fig_mesh_limit:
     params: tolerance=config["reference"]["tolerance"]
     log: "results/limits/logs/fig_mesh_limit.log"
     shell:
-        "{PYTHON} {input.script} {input.table} --tolerance {params.tolerance}"
-        " --out results/limits/mesh_limit > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {input.table:q} --tolerance {params.tolerance:q}"
+        " --out results/limits/mesh_limit > {log:q} 2>&1"
 
 
 rule fig_timestep_backward:
@@ -403,7 +402,7 @@ rule fig_timestep_backward:
         table="results/limits/timestep_limit.csv",
     output: multiext("results/limits/timestep_backward", *FIGURE_EXTS)
     log: "results/limits/logs/fig_timestep_backward.log"
-    shell: "{PYTHON} {input.script} {input.table} --out results/limits/timestep_backward > {log} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.table:q} --out results/limits/timestep_backward > {log:q} 2>&1"
 
 
 BACKWARD_CELERITY_SWEEPS = ("table1_h32", "variant_seed2", "table1", "table1_h128", "timestep", "variant_dt1",
@@ -417,11 +416,11 @@ rule fig_backward_celerity:
         reference=repo_path(config["reference"]["table"]),
         tables=[metrics_table(sweep) for sweep in BACKWARD_CELERITY_SWEEPS],
     output: multiext("results/limits/backward_celerity", *FIGURE_EXTS)
-    params: tables=" ".join(f"--table {sweep}={metrics_table(sweep)}" for sweep in BACKWARD_CELERITY_SWEEPS)
+    params: tables=[word for sweep in BACKWARD_CELERITY_SWEEPS for word in ("--table", f"{sweep}={metrics_table(sweep)}")]
     log: "results/limits/logs/fig_backward_celerity.log"
     shell:
-        "{PYTHON} {input.script} {params.tables} --reference {input.reference}"
-        " --out results/limits > {log} 2>&1"
+        "{PYTHON:q} {input.script:q} {params.tables:q} --reference {input.reference:q}"
+        " --out results/limits > {log:q} 2>&1"
 
 
 HOW_SURE_LIMITS_FILES = ["paper/generated/how_sure_limits.tex", "paper/generated/mesh_limit.tex",
@@ -445,6 +444,6 @@ rule paper_how_sure_limits:
     output: HOW_SURE_LIMITS_FILES
     log: "logs/paper_how_sure_limits.log"
     shell:
-        "({PYTHON} {input.script} --mesh {input.mesh} --timestep {input.timestep}"
-        " --timeline {input.timeline} --pulses {input.pulses} -o paper/generated/how_sure_limits.tex"
-        " && cp {input.tables} {input.figures} paper/generated/) > {log} 2>&1"
+        "({PYTHON:q} {input.script:q} --mesh {input.mesh:q} --timestep {input.timestep:q}"
+        " --timeline {input.timeline:q} --pulses {input.pulses:q} -o paper/generated/how_sure_limits.tex"
+        " && cp {input.tables:q} {input.figures:q} paper/generated/) > {log:q} 2>&1"

@@ -102,6 +102,24 @@ def test_schema_defaults_are_allowed_by_the_solver(table, where, name, sub, key)
             assert inside or (value == bound["value"] and not bound["exclusive"]), f"{where}.{name} = {value}"
 
 
+# The largest integer that YAML, JSON and a float keep exact: `--config` seeds arrive as floats.
+EXACT_INTEGER_MAX = 2**53 - 1
+
+
+@pytest.mark.parametrize("where,name,sub,key", PROPERTIES)
+def test_every_number_has_both_bounds_so_infinity_never_passes(table, where, name, sub, key):
+    """Issue 21 item 6: `f: 1e999` (inf) and `seed: 1e19` were admitted (the solver's key table has no
+    upper bound for them); the schema bounds every number it passes to the solver, within the table's
+    bounds (test above) and, for an integer, within the exact range of a float."""
+    if table[key]["kind"] == "choice":
+        return
+    assert lower_of(sub) is not None and upper_of(sub) is not None, f"{where}.{name}: unbounded ({key})"
+    assert not admits(sub, math.inf) and not admits(sub, -math.inf)
+    if sub["type"] == "integer":
+        assert upper_of(sub)[0] <= EXACT_INTEGER_MAX, f"{where}.{name}: {upper_of(sub)} beyond 2^53 - 1"
+        assert not admits(sub, 1e19)
+
+
 def admits(subschema, value) -> bool:
     validator = jsonschema.Draft7Validator({**subschema, "definitions": SCHEMA["definitions"]})
     return validator.is_valid(value)

@@ -162,3 +162,54 @@ def test_a_corrupt_dataset_is_reported_with_file_and_dataset(tmp_path, filters, 
     code, _, err = analysis("measure", run, "-o", out)
     assert code == 2 and not out.exists()
     assert f"error: {run}: dataset '/interface/slip_velocity'" in err and words in err, err
+
+
+# Issue 21 item 8: a damaged structure or an absurd declared size is an error naming the file, exit 2.
+
+def _damage_object_header(run, name):
+    """Flip the version byte of a dataset's object header (h5py then raises KeyError on opening it)."""
+    with h5py.File(run, "r") as file:
+        address = h5py.h5o.get_info(file[name].id).addr
+    with open(run, "r+b") as stream:
+        stream.seek(address)
+        byte = stream.read(1)[0]
+        stream.seek(address)
+        stream.write(bytes([byte ^ 0xFF]))
+
+
+def _declare(file, name, shape):
+    """Replace a dataset by one that declares `shape` and stores nothing (chunks never written)."""
+    del file[name]
+    file.create_dataset(name, shape=shape, dtype="f8", chunks=(1024,) + shape[1:])
+
+
+def _declare_huge_field(run):
+    with h5py.File(run, "a") as file:
+        _declare(file, "/interface/slip_velocity", (10**9, 16))
+
+
+def _declare_huge_run(run):
+    """Every interface and global dataset says 1e11 rows: consistent, and 100s of TB."""
+    with h5py.File(run, "a") as file:
+        n_c = file["/interface/x"].shape[0]
+        for name in list(file["interface"]):
+            if name != "x":
+                _declare(file, f"/interface/{name}", (10**11,) if name == "t" else (10**11, n_c))
+        for name in list(file["global"]):
+            _declare(file, f"/global/{name}", (10**11,))
+
+
+@pytest.mark.parametrize("damage, words", [
+    (lambda run: _damage_object_header(run, "/interface/slip_velocity"), "damaged HDF5 structure (KeyError"),
+    (_declare_huge_field, "/interface/slip_velocity has shape (1000000000, 16), expected (n_out, n_c)"),
+    (_declare_huge_run, "of memory available"),
+], ids=["object_header", "huge_field", "huge_run"])
+def test_a_structurally_broken_run_file_is_an_error_naming_it(tmp_path, damage, words):
+    run = tmp_path / "run.h5"
+    write_run(run, paper_case())
+    damage(run)
+    out = tmp_path / "m.json"
+    code, _, err = analysis("measure", run, "-o", out)
+    assert code == 2 and not out.exists(), err
+    assert err.startswith(f"error: {run}: ") and words in err, err
+    assert len(err.strip().splitlines()) == 1, err

@@ -53,11 +53,12 @@ def config(study_config):
     return copy.deepcopy(study_config)
 
 
-def snakemake(workdir, *args, env=None, check=True, timeout=1800):
-    """Runs the repository's Snakefile with results in `workdir`; returns the CompletedProcess."""
+def snakemake(workdir, *args, env=None, check=True, timeout=1800, snakefile=REPO / "Snakefile"):
+    """Runs the repository's Snakefile (or another checkout's) with results in `workdir`; returns the
+    CompletedProcess."""
     environment = {**os.environ, **(env or {})}
     environment.setdefault("SLIDEWAVE_BIN", str(SOLVER))
-    command = [SNAKEMAKE, "-s", str(REPO / "Snakefile"), "--directory", str(workdir), *args]
+    command = [SNAKEMAKE, "-s", str(snakefile), "--directory", str(workdir), *args]
     result = subprocess.run(command, capture_output=True, text=True, env=environment, timeout=timeout)
     if check and result.returncode != 0:
         raise AssertionError(f"{' '.join(command)} failed ({result.returncode}):\n"

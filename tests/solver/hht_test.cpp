@@ -42,8 +42,12 @@ class DenseSolver : public LinearSolver {
 /// The same as a split solver (linalg/split_solver.hpp): u = u_free + Z g with Z = A^{-1} C^T precomputed.
 class DenseSplitSolver : public SplitSolver {
  public:
+  // No solve without contact columns: Eigen's triangular solve binds coeffRef(0, 0) of an empty
+  // right-hand side (undefined behaviour, found by UBSan).
   DenseSplitSolver(const Eigen::SparseMatrix<double>& A, int n_contact)
-      : ldlt_(Eigen::MatrixXd(A)), Z_(ldlt_.solve(Eigen::MatrixXd::Identity(A.rows(), n_contact))) {}
+      : ldlt_(Eigen::MatrixXd(A)),
+        Z_(n_contact > 0 ? Eigen::MatrixXd(ldlt_.solve(Eigen::MatrixXd::Identity(A.rows(), n_contact)))
+                         : Eigen::MatrixXd(A.rows(), 0)) {}
   void solve_into(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> x) const override {
     x = ldlt_.solve(b);
   }

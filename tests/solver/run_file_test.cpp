@@ -201,7 +201,7 @@ TEST(RunFile, RoundTripWithProvenance) {
   EXPECT_EQ(dataset_shape(file, "/snapshots/coordinates"), (std::vector<hsize_t>{n_nodes_full, 2}));
   EXPECT_EQ(dataset_shape(file, "/snapshots/connectivity"), (std::vector<hsize_t>{8 * 4, 4}));
   for (int s = 0; s < 2; ++s) {
-    char id[8];
+    char id[12];  // any int: -Wformat-truncation
     std::snprintf(id, sizeof id, "%04d", s);
     for (const char* field : {"displacement", "velocity"}) {
       const std::string p = std::string("/snapshots/") + id + "/" + field;
