@@ -14,7 +14,7 @@ import os
 import sys
 from pathlib import Path
 
-from analysis.errors import InputError
+from analysis.core.errors import InputError
 
 EXIT_FAILED_CHECK = 1
 EXIT_BAD_INPUT = 2
@@ -33,9 +33,9 @@ def _refuse_input_as_output(output: Path, inputs: list[Path]) -> None:
 
 
 def _measure(args: argparse.Namespace) -> int:
-    from analysis.atomic import write_file
-    from analysis.io import load_run
-    from analysis.measure import Settings, measure_run
+    from analysis.core.atomic import write_file
+    from analysis.core.io import load_run
+    from analysis.metrics.measure import Settings, measure_run
 
     _refuse_input_as_output(args.output, [args.run])
     settings = Settings(threshold_rel=args.threshold, window_length=args.window,
@@ -65,9 +65,9 @@ def _measure(args: argparse.Namespace) -> int:
 
 
 def _aggregate(args: argparse.Namespace) -> int:
-    from analysis import aggregate as agg
-    from analysis.atomic import write_files
-    from analysis.reference import read_reference
+    from analysis.tables import aggregate as agg
+    from analysis.core.atomic import write_files
+    from analysis.tables.reference import read_reference
 
     reference = read_reference(args.reference)
     _refuse_input_as_output(args.output, list(args.metrics) + [args.reference])
@@ -81,8 +81,8 @@ def _aggregate(args: argparse.Namespace) -> int:
 
 
 def _compare(args: argparse.Namespace) -> int:
-    from analysis.compare import compare, read_table
-    from analysis.reference import read_reference
+    from analysis.tables.compare import compare, read_table
+    from analysis.tables.reference import read_reference
 
     reference = read_reference(args.reference)
     result = compare(read_table(args.table), reference, args.tolerance,
@@ -97,10 +97,10 @@ def _compare(args: argparse.Namespace) -> int:
 
 
 def _score_rules(args: argparse.Namespace) -> int:
-    from analysis import aggregate as agg
-    from analysis.atomic import write_files
-    from analysis.reference import read_reference
-    from analysis.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
+    from analysis.tables import aggregate as agg
+    from analysis.core.atomic import write_files
+    from analysis.tables.reference import read_reference
+    from analysis.tables.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
 
     reference = read_reference(args.reference)
     outputs = {}
@@ -126,9 +126,9 @@ def _score_rules(args: argparse.Namespace) -> int:
 
 def _flutter_boundary(args: argparse.Namespace) -> int:
     try:
-        from analysis.flutter import flutter_boundary
+        from analysis.theory.flutter import flutter_boundary
     except ImportError as err:
-        raise InputError(f"the flutter-boundary theory (analysis/flutter.py) is not available: {err}") from None
+        raise InputError(f"the flutter-boundary theory (analysis/theory/flutter.py) is not available: {err}") from None
     for nu in args.nu:
         if not 0.0 <= nu < 0.5:
             raise InputError(f"--nu {nu} outside [0, 0.5)")
@@ -139,8 +139,8 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
 
 
 def _bimaterial(args: argparse.Namespace) -> int:
-    from analysis.bimaterial_stability import bimaterial_regime, instability_threshold
-    from analysis.interface_wave import ElasticSolid
+    from analysis.theory.bimaterial_stability import bimaterial_regime, instability_threshold
+    from analysis.theory.interface_wave import ElasticSolid
 
     nu_substrate = args.nu if args.nu_substrate is None else args.nu_substrate
     values = [("--E", args.E), ("--rho", args.rho), ("--rho-ratio", args.rho_ratio)]
@@ -181,7 +181,7 @@ def _bimaterial(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
+    from analysis.fronts.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
 
     parser = argparse.ArgumentParser(prog="python3 -m analysis",
                                      description="Measure slidewave runs and compare with the paper.")
@@ -242,7 +242,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = commands.add_parser("bimaterial",
                             help="generalized Rayleigh speed and the most unstable mode of steady sliding "
-                                 "of the layer on a deformable substrate (analysis/bimaterial_stability.py)")
+                                 "of the layer on a deformable substrate (analysis/theory/bimaterial_stability.py)")
     p.add_argument("--E-ratio", type=float, nargs="+", required=True,
                    help="E_substrate / E_layer (one block of output per value)")
     p.add_argument("--nu", type=float, required=True, help="Poisson's ratio of the layer")
@@ -261,8 +261,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _reference_options(p: argparse.ArgumentParser) -> None:
     """--reference and --tolerance, the same for every command that scores against Table 1."""
-    from analysis.aggregate import DEFAULT_TOLERANCE
-    from analysis.reference import DEFAULT_REFERENCE
+    from analysis.tables.aggregate import DEFAULT_TOLERANCE
+    from analysis.tables.reference import DEFAULT_REFERENCE
 
     p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
                    help="published celerities (default %(default)s)")

@@ -6,7 +6,7 @@ measured on the reference case (docs/energy-balance.md), as LaTeX macros.
 
 Three runs of the same case with `output.energy_decomposition = hht`: hht_alpha = 0 (trapezoidal
 rule, where the balance must close), and the study's hht_alpha with each contact weighting. For each:
-the energy that flowed (J/m) and the largest |residual| relative to it (analysis/energy.py, the
+the energy that flowed (J/m) and the largest |residual| relative to it (analysis/metrics/energy.py, the
 measure the study reports for every run), and, for alpha > 0, the residual and the HHT dissipation
 measured term by term at the end of the run, their ratio, the largest |residual + dissipation| over
 the run, and each term's dissipation (all relative to the energy that flowed). A run without the decomposition, with the wrong alpha or weighting, or of another case
@@ -19,8 +19,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from analysis.energy import energy_balance_error  # noqa: E402
-from analysis.io import load_run  # noqa: E402
+from analysis.metrics.energy import energy_balance_error  # noqa: E402
+from analysis.core.io import load_run  # noqa: E402
 from numbers_tex import ENERGY_MACRO_NAMES, render  # noqa: E402
 from table_io import InputError, write_atomically  # noqa: E402
 

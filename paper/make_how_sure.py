@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """generated/how_sure_numbers.tex: the numbers of paper/how_sure.tex, from the ensemble summary
-(`python3 -m analysis.ensemble`) and the envelope summary (`python3 -m analysis.envelope`).
+(`python3 -m analysis.confidence.ensemble`) and the envelope summary (`python3 -m analysis.confidence.envelope`).
 
     paper/make_how_sure.py --ensemble ensemble_summary.json --envelope envelope_summary.json -o OUT.tex
         [--finer-ensemble ensemble_summary.json --finer-mesh 128]
@@ -16,12 +16,12 @@ import sys
 from table_io import write_atomically
 from numbers_tex import render  # noqa: E402
 from summary_json import get, read  # noqa: E402
-from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
 
-#: analysis.ensemble's systematic groups -> the macro stem of each.
+#: analysis.confidence.ensemble's systematic groups -> the macro stem of each.
 GROUP_STEMS = {"supersonic backward": "Supersonic", "nu 0-0.1, f 1.1-1.2": "LowNu",
                "nu 0.1-0.2, f >= 1.5": "HighF", "the rest": "Rest"}
-#: analysis.envelope's factors -> macro stem.
+#: analysis.confidence.envelope's factors -> macro stem.
 FACTOR_STEMS = {"seed": "Seed", "mesh": "Mesh", "time step": "TimeStep", "integration": "Integration",
                 "contact weighting": "Contact"}
 

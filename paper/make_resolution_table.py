@@ -11,7 +11,7 @@ Rows are the published cells that the *last* input ran (the subset run at the fi
 reproduced value (within the tolerance with the published sign, regime and category) is set in bold,
 a wrong sign gets a dagger, a wrong regime a double dagger, another category (e.g. no opening) a
 section sign. The closing rows give, over these cells, the subset's score at each resolution
-(`analysis.aggregate.summarize`: values reproduced, right signs and regimes, median
+(`analysis.tables.aggregate.summarize`: values reproduced, right signs and regimes, median
 |deviation|), so that refinement can be judged on the same cells. The tolerance is the tables' own
 (all inputs must agree).
 """
@@ -26,7 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
+from analysis.tables.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match",
             "category_match", "reproduced")

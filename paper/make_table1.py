@@ -22,21 +22,21 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from table_io import InputError, label, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis import celerity_default  # noqa: E402  (table_io puts the repository on the path)
+from analysis.fronts import default_rule  # noqa: E402  (table_io puts the repository on the path
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match",
             "regime_match", "category_match", "reproduced", "celerity_quality",
             "celerity_window_sensitivity", "regime", "category", "end_reason")
 
-#: celerity_quality flags (analysis/celerity_default.py, whose thresholds are quoted) -> the mark
+#: celerity_quality flags (analysis/fronts/default_rule.py, whose thresholds are quoted) -> the mark
 #: shown and what it means.
 QUALITY_MARKS = {
-    "unsteady": ("u", f"the front speed drifts by more than {100 * celerity_default.QUALITY_DRIFT:g}\\,\\% "
+    "unsteady": ("u", f"the front speed drifts by more than {100 * default_rule.QUALITY_DRIFT:g}\\,\\% "
                       "over the window"),
     "estimates_disagree": ("e", "the threshold fit and the cross-correlation estimate of $c_p$ differ by more "
-                                f"than {100 * celerity_default.QUALITY_AGREEMENT:g}\\,\\%"),
+                                f"than {100 * default_rule.QUALITY_AGREEMENT:g}\\,\\%"),
     "aliasing_risk": ("a", "aliasing risk: the front moves by more than "
-                           f"{celerity_default.ALIASING_FRACTION:g} pulse spacings between output frames"),
+                           f"{default_rule.ALIASING_FRACTION:g} pulse spacings between output frames"),
     "counter_fronts": ("c", "fronts also run the other way"),
     "short_window": ("w", "the fit spans less than half of the window"),
 }

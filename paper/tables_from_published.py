@@ -7,7 +7,7 @@ HDF5, no metrics.json) can build the paper from the committed measurements.
         --reference study/reference/table1_celerity.csv --tolerance 0.05 -o results
 
 Each row of all_metrics.csv is one run's scalar metrics; they are aggregated again by
-`analysis.aggregate.aggregate` (derived columns, Table 1 flags), not edited. Table 1 of a sweep takes
+`analysis.tables.aggregate.aggregate` (derived columns, Table 1 flags), not edited. Table 1 of a sweep takes
 the runs that its committed table1.csv compared (same cell, celerity and min T/N), so the selection is the one
 the pipeline made. Nothing is measured here and nothing under study/results is written.
 """
@@ -18,10 +18,10 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from analysis import aggregate as agg  # noqa: E402
-from analysis.errors import InputError  # noqa: E402
-from analysis.reference import cell_key, read_reference  # noqa: E402
-from analysis.table_csv import read_table  # noqa: E402
+from analysis.tables import aggregate as agg  # noqa: E402
+from analysis.core.errors import InputError  # noqa: E402
+from analysis.tables.reference import cell_key, read_reference  # noqa: E402
+from analysis.core.table_csv import read_table  # noqa: E402
 
 #: Columns aggregate derives: dropped from the committed rows so that the current formulas make them.
 DERIVED = set(agg.DERIVED_COLUMNS)

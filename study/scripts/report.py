@@ -23,7 +23,7 @@ layout at the page width (long run names wrap), so that it needs no horizontal s
 tables scroll on a wide screen and wrap in print and on a narrow screen (under 60em).
 Nothing is computed here: deviations, signs, regimes, categories and the celerity's window
 sensitivity are the aggregate's columns or metrics.json keys, wall time and memory Snakemake's
-benchmark of `simulate`; categories read as analysis.regime.CATEGORY_LABELS says.
+benchmark of `simulate`; categories read as analysis.metrics.regime.CATEGORY_LABELS says.
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-from analysis.regime import category_label  # noqa: E402
+from analysis.metrics.regime import category_label  # noqa: E402
 
 #: metrics.json keys shown per run, when present, and their column headings.
 RUN_KEYS = {"category": "category", "regime": "regime", "onset_time": "slip onset (s)",

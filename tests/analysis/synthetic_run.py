@@ -8,7 +8,7 @@ Used by the analysis tests and reusable by pipeline tests (`write_run(path, Scen
 
 The derived constants (c_s, c_l, p0, dt, the onset estimate, the opening threshold) are the
 solver's formulas written out here on purpose: a synthetic file stands in for the solver, and
-tests/analysis/test_theory.py checks analysis.theory against the real solver.
+tests/analysis/theory/test_elastic.py checks analysis.theory.elastic against the real solver.
 """
 
 from __future__ import annotations

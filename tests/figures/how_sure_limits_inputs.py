@@ -1,6 +1,6 @@
 """Made-up inputs of the limits subsections of paper/how_sure.tex (three published cells at three
 meshes, one backward cell at four time steps and two seeds, a Fig. 3 timeline, pulse counts) run
-through analysis.mesh_limit, timestep_limit, timeline and pulse_seeds: for
+through analysis.confidence.mesh_limit, timestep_limit, timeline and pulse_seeds: for
 tests/figures/test_how_sure_limits.py and the full report build of test_paper.py."""
 import sys
 
@@ -8,7 +8,7 @@ from figure_support import PAPER, ROOT, call, command
 from how_sure_inputs import write_csv
 
 sys.path.insert(0, str(ROOT))
-from analysis import mesh_limit, pulse_seeds, timeline, timestep_limit  # noqa: E402
+from analysis.confidence import mesh_limit, pulse_seeds, timeline, timestep_limit  # noqa: E402
 
 REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
 MESHES = {32: {(0.2, 1.5): 0.84, (0.45, 1.0): -2.68, (0.0, 1.1): 0.99},

@@ -14,8 +14,10 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-from analysis import aggregate, pulses, theory  # noqa: E402
-from analysis.reference import ReferenceCell  # noqa: E402
+from analysis.tables import aggregate
+from analysis.metrics import pulses
+from analysis.theory import elastic  # noqa: E402
+from analysis.tables.reference import ReferenceCell  # noqa: E402
 
 E, RHO, H = 1000.0, 1000.0, 25.0
 PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
@@ -170,7 +172,7 @@ def metrics_rows():
                  friction_energy_share_opening=0.5 if opening else None,
                  dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
                  below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, complete=True,
-                 pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
+                 pulse_spacing_theory=elastic.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
                  localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
                  first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
                  first_drop_bottom_T_over_N=-0.3 if "inversion" in category else 0.6,

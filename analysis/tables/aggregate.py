@@ -1,0 +1,395 @@
+"""Many metrics files -> the regenerated Table 1 beside the published one, and a table of all metrics.
+
+Outputs (all written together or not at all):
+
+- ``table1.csv``: one row per published cell, columns ``TABLE1_COLUMNS``. celerity and everything
+  derived from it are empty when no metrics file is given for the cell or its celerity is undefined.
+  deviation_rel = (celerity - published) / |published|; within_tol = |deviation_rel| <= tolerance;
+  sign_match, regime_match compare with the published celerity and its regime (from c_s, c_l of
+  Table 1's material). published_category is the category the published cell implies (every cell of
+  the paper's Table 1 is an opening wave: ``<regime>_<direction>_opening``, ``intersonic_opening``
+  for a forward intersonic one, inversion not distinguished); category_match compares the run's
+  category with it (``intersonic_opening_inversion`` counts as ``intersonic_opening``); reproduced =
+  within_tol and sign_match and regime_match and category_match: a cell whose run shows another
+  outcome (no opening, no front) is never counted as reproduced, however close its celerity.
+  celerity_quality and celerity_window_sensitivity are the run's (its c_p's uncertainty). end_reason is filled only for a run that did not complete (e.g.
+  ``contact_not_converged``): such a row is shown, and flagged, never passed off as a complete run.
+- ``table1.md``, ``table1.tex`` (booktabs tabular in the paper's layout: f rows, nu columns; for
+  each f a published, a regenerated and a deviation line; c_s, sqrt(2) c_s, c_l at the bottom).
+- ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
+  regime_matches, category_matches, reproduced, median_abs_deviation, max_abs_deviation, tolerance,
+  missing_cells, category_mismatches (the compared cells whose category differs, "nu=N f=F").
+- ``all_metrics.csv``: one row per metrics file, every scalar key, then the columns derived from
+  them for tables and figures (``DERIVED_COLUMNS``, see ``derived_columns``), so that ``paper/`` and
+  ``figures/`` only select and format.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any, Iterable
+
+from analysis.theory import elastic
+from analysis.core.errors import InputError
+from analysis.tables.reference import ReferenceCell, metrics_by_cell
+from analysis.core.table_csv import csv_text, format_cell
+
+TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
+                  "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",
+                  "min_T_over_N", "published_category", "category_match", "reproduced",
+                  "celerity_quality", "celerity_window_sensitivity", "end_reason")
+DEFAULT_TOLERANCE = 0.05
+DERIVED_COLUMNS = ("celerity_over_cs", "first_drop_start_after_onset", "first_drop_duration",
+                   "first_drop_complete", "inside_flutter_wedge")
+
+
+# --------------------------------------------------------------------------------------------------
+# Inputs
+
+
+def _number(value: Any) -> float:
+    """A metrics value as float; None -> nan."""
+    if value is None:
+        return math.nan
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise TypeError(value)
+    return float(value)
+
+
+def load_metrics(path: str | Path) -> dict[str, Any]:
+    """One metrics.json; InputError unless it is a JSON object with numeric nu, f and a celerity key
+    (number or null)."""
+    try:
+        with open(path) as stream:
+            metrics = json.load(stream)
+    except OSError as err:
+        raise InputError(f"{path}: cannot read metrics ({err.strerror})") from None
+    except json.JSONDecodeError as err:
+        raise InputError(f"{path}: not valid JSON ({err})") from None
+    if not isinstance(metrics, dict):
+        raise InputError(f"{path}: metrics must be a JSON object")
+    missing = [key for key in ("nu", "f", "celerity") if key not in metrics]
+    if missing:
+        raise InputError(f"{path}: metrics lack key(s) {', '.join(missing)}")
+    try:
+        nu, f = _number(metrics["nu"]), _number(metrics["f"])
+        _number(metrics["celerity"])
+    except TypeError as err:
+        raise InputError(f"{path}: nu, f and celerity must be numbers (celerity may be null), "
+                         f"got {err.args[0]!r}") from None
+    if not (math.isfinite(nu) and math.isfinite(f)):
+        raise InputError(f"{path}: nu and f must be finite")
+    metrics.setdefault("metrics_file", str(path))
+    return metrics
+
+
+def parse_selection(conditions: Iterable[str]) -> list[tuple[str, str]]:
+    """'key=value' strings -> pairs; InputError for a malformed one."""
+    pairs = []
+    for condition in conditions:
+        key, sep, value = condition.partition("=")
+        if not sep or not key.strip():
+            raise InputError(f"--select expects key=value, got '{condition}'")
+        pairs.append((key.strip(), value.strip()))
+    return pairs
+
+
+def _matches(value: Any, wanted: str) -> bool:
+    if isinstance(value, bool):
+        return str(value).lower() == wanted.lower()
+    if isinstance(value, (int, float)):
+        try:
+            return math.isclose(float(value), float(wanted), rel_tol=1e-9, abs_tol=1e-12)
+        except ValueError:
+            return False
+    return str(value) == wanted
+
+
+def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> list[dict[str, Any]]:
+    """Metrics whose every `key` equals `value` (numbers compared as numbers)."""
+    return [m for m in metrics if all(k in m and _matches(m[k], w) for k, w in conditions)]
+
+
+# --------------------------------------------------------------------------------------------------
+# Columns derived from a run's metrics
+
+
+def read_flutter(path: str | Path) -> list[tuple[float, float, float]]:
+    """[(nu, f_lower, f_upper)] of `python3 -m analysis flutter-boundary` output (nan: no wedge)."""
+    try:
+        with open(path) as stream:
+            lines = [line.split() for line in stream if line.strip() and not line.startswith("#")]
+        return [(float(fields[0]), float(fields[1]), float(fields[2])) for fields in lines]
+    except OSError as err:
+        raise InputError(f"{path}: cannot read the flutter boundary ({err.strerror})") from None
+    except (ValueError, IndexError) as err:
+        raise InputError(f"{path}: not a flutter boundary 'nu f_lower f_upper' per line ({err})") from None
+
+
+def inside_flutter_wedge(boundary: list[tuple[float, float, float]], nu: float, f: float) -> bool | None:
+    """True when (nu, f) lies strictly inside the flutter wedge of steady sliding (Martins et al.
+    1995), its bounds interpolated linearly in nu between the tabulated values (a nan bound: the
+    nearer tabulated value); False outside or where there is no wedge; None when nu lies outside
+    the tabulated range."""
+    below = [b for b in boundary if b[0] <= nu + 1e-12]
+    above = [b for b in boundary if b[0] >= nu - 1e-12]
+    if not below or not above:
+        return None
+    a, b = below[-1], above[0]
+    w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
+    lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
+                    else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
+    return math.isfinite(lower) and lower < f < upper  # False for upper = nan
+
+
+def _difference(m: dict[str, Any], later: str, earlier: str) -> float | None:
+    a, b = m.get(later), m.get(earlier)
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in (a, b)):
+        return None
+    return float(a) - float(b)
+
+
+def _first_drop_complete(m: dict[str, Any]) -> bool | None:
+    n_drops, n_complete = m.get("n_drops"), m.get("n_complete_drops")
+    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+               for x in (n_drops, n_complete)) or n_drops < 1:
+        return None
+    return n_complete >= 1
+
+
+def derived_columns(m: dict[str, Any],
+                    flutter: list[tuple[float, float, float]] | None = None) -> dict[str, Any]:
+    """The DERIVED_COLUMNS of one run (None where an input is missing or undefined).
+
+    celerity_over_cs = celerity / c_s (-); first_drop_start_after_onset = first_drop_start_time -
+    onset_time (s); first_drop_duration = first_drop_bottom_time - first_drop_start_time (s);
+    first_drop_complete = n_complete_drops >= 1 (drops are found in time order and only the last can
+    be cut by the end of the run: False means the first drop's bottom, duration and min T/N are
+    those reached when the run stopped), None without a drop; inside_flutter_wedge
+    (inside_flutter_wedge; only with a flutter boundary).
+    """
+    c, c_s = m.get("celerity"), m.get("c_s")
+    ratio = None
+    if (isinstance(c, (int, float)) and isinstance(c_s, (int, float)) and math.isfinite(c)
+            and math.isfinite(c_s) and c_s > 0):
+        ratio = c / c_s
+    return {
+        "celerity_over_cs": ratio,
+        "first_drop_start_after_onset": _difference(m, "first_drop_start_time", "onset_time"),
+        "first_drop_duration": _difference(m, "first_drop_bottom_time", "first_drop_start_time"),
+        "first_drop_complete": _first_drop_complete(m),
+        "inside_flutter_wedge": (inside_flutter_wedge(flutter, _number(m["nu"]), _number(m["f"]))
+                                 if flutter else None),
+    }
+
+
+# --------------------------------------------------------------------------------------------------
+# Table 1
+
+
+def published_category(cell: ReferenceCell) -> str:
+    """The category a published cell implies: every cell of the paper's Table 1 is an opening wave
+    (the paper's Fig. 4a), in the direction of its celerity's sign and its regime."""
+    direction = "forward" if cell.celerity > 0 else "backward"
+    if cell.regime == "intersonic" and direction == "forward":
+        return "intersonic_opening"
+    return f"{cell.regime}_{direction}_opening"
+
+
+def category_matches(category: Any, published: str) -> bool:
+    """The run's category is the published one (with or without inversion of T/N)."""
+    return isinstance(category, str) and category.removesuffix("_inversion") == published
+
+
+def incomplete_reason(metrics: dict[str, Any]) -> str | None:
+    """The end_reason of a run that did not complete (`complete` false), else None."""
+    if metrics.get("complete", True) is not False:
+        return None
+    return str(metrics.get("end_reason") or "incomplete")
+
+
+def table1_rows(metrics: list[dict[str, Any]], reference: list[ReferenceCell],
+                tolerance: float = DEFAULT_TOLERANCE) -> list[dict[str, Any]]:
+    """One row per published cell (reference order), values as Python objects (None = empty).
+
+    InputError when two metrics files fall on the same published cell (select one with --select).
+    """
+    by_cell = metrics_by_cell(metrics)
+    rows = []
+    for cell in reference:
+        m = by_cell.get(cell.key)
+        row: dict[str, Any] = {column: None for column in TABLE1_COLUMNS}
+        row.update(nu=cell.nu, f=cell.f, published=cell.celerity, published_regime=cell.regime,
+                   published_category=published_category(cell))
+        if m is not None:
+            row.update(category=m.get("category"), opening=m.get("opening"),
+                       inversion=m.get("inversion"), min_T_over_N=m.get("min_T_over_N"),
+                       regime=m.get("regime"), end_reason=incomplete_reason(m),
+                       category_match=category_matches(m.get("category"), row["published_category"]),
+                       celerity_quality=m.get("celerity_quality"),
+                       celerity_window_sensitivity=m.get("celerity_window_sensitivity"))
+            c = _number(m["celerity"])
+            if math.isfinite(c):
+                deviation = (c - cell.celerity) / abs(cell.celerity)
+                row.update(celerity=c, deviation_rel=deviation,
+                           sign_match=(c > 0) == (cell.celerity > 0),
+                           regime_match=m.get("regime") == cell.regime,
+                           within_tol=abs(deviation) <= tolerance)
+                row["reproduced"] = bool(row["within_tol"] and row["sign_match"] and row["regime_match"]
+                                         and row["category_match"])
+        rows.append(row)
+    return rows
+
+
+def summarize(rows: list[dict[str, Any]], tolerance: float) -> dict[str, Any]:
+    """The summary of table1_rows (see the module docstring)."""
+    compared = [r for r in rows if r["celerity"] is not None]
+    deviations = sorted(abs(r["deviation_rel"]) for r in compared)
+    median = (math.nan if not deviations else
+              0.5 * (deviations[(len(deviations) - 1) // 2] + deviations[len(deviations) // 2]))
+    return {
+        "cells_total": len(rows),
+        "cells_compared": len(compared),
+        "cells_missing": len(rows) - len(compared),
+        "within_tolerance": sum(bool(r["within_tol"]) for r in compared),
+        "sign_matches": sum(bool(r["sign_match"]) for r in compared),
+        "regime_matches": sum(bool(r["regime_match"]) for r in compared),
+        "category_matches": sum(bool(r["category_match"]) for r in compared),
+        "reproduced": sum(bool(r["reproduced"]) for r in compared),
+        "median_abs_deviation": median if deviations else None,
+        "max_abs_deviation": deviations[-1] if deviations else None,
+        "tolerance": tolerance,
+        "missing_cells": [f"nu={r['nu']:g} f={r['f']:g}" for r in rows if r["celerity"] is None],
+        "category_mismatches": [f"nu={r['nu']:g} f={r['f']:g}" for r in compared if not r["category_match"]],
+    }
+
+
+def summary_line(summary: dict[str, Any]) -> str:
+    """One line for the terminal and the log."""
+    n = summary["cells_compared"]
+    median = summary["median_abs_deviation"]
+    return (f"table1: {n}/{summary['cells_total']} cells measured, {summary['within_tolerance']}/{n} "
+            f"within {100 * summary['tolerance']:g}%, signs {summary['sign_matches']}/{n}, "
+            f"regimes {summary['regime_matches']}/{n}, categories {summary['category_matches']}/{n}, "
+            f"reproduced {summary['reproduced']}/{n}, median |deviation| "
+            + ("n/a" if median is None else f"{100 * median:.1f}%"))
+
+
+# --------------------------------------------------------------------------------------------------
+# Formatting
+
+
+def table1csv_text(rows: list[dict[str, Any]]) -> str:
+    return csv_text(TABLE1_COLUMNS, rows)
+
+
+def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
+    header = ["nu", "f", "published (m/s)", "regenerated (m/s)", "deviation", "regime (pub.)",
+              "regime", "category", "min T/N"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for r in rows:
+        c = r["celerity"]
+        lines.append("| " + " | ".join([
+            f"{r['nu']:g}", f"{r['f']:.2f}", f"{r['published']:.3f}",
+            "missing" if c is None else f"{c:.3f}",
+            "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
+            r["published_regime"] or "", r["regime"] or "",
+            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else "")
+            + (f" (published: {r['published_category']})" if r["category_match"] is False else ""),
+            format_cell(r["min_T_over_N"], ".3f")]) + " |")
+    return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
+
+
+def table1_latex(rows: list[dict[str, Any]]) -> str:
+    """Booktabs tabular: for each f a published / this work / deviation (%) line, nu columns,
+    and the wave speeds c_s, sqrt(2) c_s, c_l (E = 1000 Pa, rho = 1000 kg/m^3) at the bottom."""
+    nus = sorted({r["nu"] for r in rows})
+    fs = sorted({r["f"] for r in rows})
+    at = {(r["nu"], r["f"]): r for r in rows}
+
+    def line(label: str, values: list[str]) -> str:
+        return label + " & " + " & ".join(values) + r" \\"
+
+    def number(value: float, fmt: str) -> str:
+        return f"${value:{fmt}}$"
+
+    out = ["% Generated by `python3 -m analysis aggregate`; needs \\usepackage{booktabs}.",
+           r"\begin{tabular}{ll" + "r" * len(nus) + "}", r"\toprule",
+           r" & & \multicolumn{%d}{c}{Poisson's ratio $\nu$} \\" % len(nus),
+           r"\cmidrule(l){3-%d}" % (len(nus) + 2),
+           line(r"$f$ &", [f"{nu:g}" for nu in nus]), r"\midrule"]
+    for i, f in enumerate(fs):
+        published, regenerated, deviation = [], [], []
+        for nu in nus:
+            r = at.get((nu, f))
+            if r is None:
+                published.append(""), regenerated.append(""), deviation.append("")
+                continue
+            published.append(number(r["published"], ".3f"))
+            if r["celerity"] is None:
+                regenerated.append("--"), deviation.append("")
+            else:
+                # a run that did not complete is marked (note under the table)
+                regenerated.append(number(r["celerity"], ".3f") + (r"$^{*}$" if r["end_reason"] else ""))
+                deviation.append(number(100 * r["deviation_rel"], "+.1f"))
+        if i:
+            out.append(r"\addlinespace")
+        out.append(line(f"{f:.2f} & published", published))
+        out.append(line(" & this work", regenerated))
+        out.append(line(r" & deviation (\%)", deviation))
+    speeds = [elastic.wave_speeds(nu) for nu in nus]
+    out += [r"\midrule",
+            line(r"$c_s$ &", [number(s[0], ".3f") for s in speeds]),
+            line(r"$\sqrt{2}\,c_s$ &", [number(s[1], ".3f") for s in speeds]),
+            line(r"$c_l$ &", [number(s[2], ".3f") for s in speeds]),
+            r"\bottomrule"]
+    ended = sorted({r["end_reason"] for r in rows if r["end_reason"] and r["celerity"] is not None})
+    if ended:
+        out.append(r"\multicolumn{%d}{l}{\footnotesize $^{*}$ run did not complete: %s} \\"
+                   % (len(nus) + 2, ", ".join(e.replace("_", r"\_") for e in ended)))
+    out.append(r"\end{tabular}")
+    return "\n".join(out) + "\n"
+
+
+def all_metricscsv_text(metrics: list[dict[str, Any]]) -> str:
+    """One row per metrics dict, every scalar key (first-seen order, metrics_file first)."""
+    columns = ["metrics_file"]
+    for m in metrics:
+        for key, value in m.items():
+            if key not in columns and (value is None or isinstance(value, (bool, int, float, str))):
+                columns.append(key)
+    return csv_text(columns, metrics, fmt=".10g")
+
+
+def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
+              reference: list[ReferenceCell], tolerance: float,
+              flutter: list[tuple[float, float, float]] | None = None) -> tuple[dict[str, str], dict[str, Any]]:
+    """All output texts by file name, and the summary.
+
+    Parameters
+    ----------
+    metrics
+        Every metrics dict given (all_metrics.csv).
+    table_metrics
+        Those that enter Table 1 (after --select).
+    reference
+        The published cells.
+    tolerance
+        Relative tolerance of within_tol.
+    flutter
+        The flutter boundary [(nu, f_lower, f_upper)] (read_flutter) for inside_flutter_wedge.
+    """
+    if not tolerance > 0:
+        raise InputError(f"tolerance must be > 0 (got {tolerance})")
+    rows = table1_rows(table_metrics, reference, tolerance)
+    summary = summarize(rows, tolerance)
+    files = {
+        "table1.csv": table1csv_text(rows),
+        "table1.md": table1_markdown(rows, summary),
+        "table1.tex": table1_latex(rows),
+        "summary.json": json.dumps(summary, indent=2) + "\n",
+        "all_metrics.csv": all_metricscsv_text([{**m, **derived_columns(m, flutter)} for m in metrics]),
+    }
+    return files, summary
