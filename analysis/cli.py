@@ -1,4 +1,6 @@
-"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,score-rules,flutter-boundary,bimaterial} ...`.
+"""Command line: `/usr/bin/python3 -m analysis COMMAND ...`, the one entry of every analysis command:
+measure, aggregate, compare, score-rules, flutter-boundary, bimaterial, and the confidence studies
+ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds (analysis/confidence/commands.py).
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
 none; 2 bad input (the message on stderr names the file and the problem; no output file is
@@ -188,7 +190,7 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     p = commands.add_parser("measure", help="one run.h5 -> metrics.json")
-    p.add_argument("run", type=Path, help="run file (format_version 2)")
+    p.add_argument("run", type=Path, help="run file (the format versions analysis/core/io.py reads)")
     p.add_argument("-o", "--output", type=Path, required=True, help="metrics JSON to write")
     p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD_REL,
                    help="slip-velocity threshold relative to V0 (default %(default)g)")
@@ -255,6 +257,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
                         "of any family, forward and backward (docs/bimaterial-theory.md)")
     p.set_defaults(handler=_bimaterial)
+
+    from analysis.confidence.commands import add_commands
+    add_commands(commands, _reference_options)
     return parser
 
 

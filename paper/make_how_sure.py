@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """generated/how_sure_numbers.tex: the numbers of paper/how_sure.tex, from the ensemble summary
-(`python3 -m analysis.confidence.ensemble`) and the envelope summary (`python3 -m analysis.confidence.envelope`).
+(`python3 -m analysis ensemble`) and the envelope summary (`python3 -m analysis envelope`).
 
     paper/make_how_sure.py --ensemble ensemble_summary.json --envelope envelope_summary.json -o OUT.tex
         [--finer-ensemble ensemble_summary.json --finer-mesh 128]

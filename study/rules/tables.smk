@@ -191,7 +191,7 @@ def envelope_tables():
 
 
 rule ensemble_table:
-    """`python3 -m analysis.confidence.ensemble`: runs that differ only by seed -> per-cell statistics."""
+    """`python3 -m analysis ensemble`: runs that differ only by seed -> per-cell statistics."""
     input:
         metrics="results/{sweep}/table/all_metrics.csv",
         reference=repo_path(config["reference"]["table"]),
@@ -201,7 +201,7 @@ rule ensemble_table:
         tolerance=config["reference"]["tolerance"],
     log: "results/{sweep}/logs/ensemble.log"
     shell:
-        "{PYTHON} -m analysis.confidence.ensemble {input.metrics} --reference {input.reference}"
+        "{PYTHON} -m analysis ensemble {input.metrics} --reference {input.reference}"
         " --tolerance {params.tolerance} -o {params.directory} > {log} 2>&1"
 
 
@@ -220,7 +220,7 @@ rule fig_phase_diagram_ensemble:
 
 
 rule envelope:
-    """`python3 -m analysis.confidence.envelope`: the method envelope of every published cell (config
+    """`python3 -m analysis envelope`: the method envelope of every published cell (config
     `paper.envelope`: the ensemble sweep and the variants)."""
     input:
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble.csv",
@@ -231,7 +231,7 @@ rule envelope:
         tolerance=config["reference"]["tolerance"],
     log: "results/envelope/logs/envelope.log"
     shell:
-        "{PYTHON} -m analysis.confidence.envelope --ensemble {input.ensemble} --spec {params.spec}"
+        "{PYTHON} -m analysis envelope --ensemble {input.ensemble} --spec {params.spec}"
         " --tolerance {params.tolerance} -o results/envelope > {log} 2>&1"
 
 
@@ -334,7 +334,7 @@ def timeline_set_options(wildcards):
 
 
 rule mesh_limit:
-    """`python3 -m analysis.confidence.mesh_limit`: every published cell against 1/N, its Richardson limit
+    """`python3 -m analysis mesh-limit`: every published cell against 1/N, its Richardson limit
     (docs/mesh-limit.md) and the verdict on whether the published values sit at it."""
     input:
         tables=[metrics_table(sweep) for sweep in LIMITS.get("meshes", {}).values()],
@@ -345,12 +345,12 @@ rule mesh_limit:
         tolerance=config["reference"]["tolerance"],
     log: "results/limits/logs/mesh_limit.log"
     shell:
-        "{PYTHON} -m analysis.confidence.mesh_limit {params.meshes} --reference {input.reference}"
+        "{PYTHON} -m analysis mesh-limit {params.meshes} --reference {input.reference}"
         " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
 
 
 rule timestep_limit:
-    """`python3 -m analysis.confidence.timestep_limit`: the backward cells against dt c_s, with the seed spread
+    """`python3 -m analysis timestep-limit`: the backward cells against dt c_s, with the seed spread
     and Adams' steady wave; does a dt -> 0 limit exist (docs/supersonic-backward.md section 6)."""
     input:
         tables=[metrics_table(sweep) for sweep in LIMITS.get("timestep", [])],
@@ -359,28 +359,28 @@ rule timestep_limit:
     params: tolerance=config["reference"]["tolerance"]
     log: "results/limits/logs/timestep_limit.log"
     shell:
-        "{PYTHON} -m analysis.confidence.timestep_limit {input.tables} --reference {input.reference}"
+        "{PYTHON} -m analysis timestep-limit {input.tables} --reference {input.reference}"
         " --tolerance {params.tolerance} -o results/limits > {log} 2>&1"
 
 
 rule timeline:
-    """`python3 -m analysis.confidence.timeline`: the Fig. 3 events of the timeline cell across seeds and meshes."""
+    """`python3 -m analysis timeline`: the Fig. 3 events of the timeline cell across seeds and meshes."""
     input:
         metrics=lambda wc: [f"{d}/metrics.json" for label in LIMITS["timeline"]["sets"] for d in timeline_runs(label)],
         runs=lambda wc: [f"{d}/run.h5" for label in LIMITS["timeline"]["sets"] for d in timeline_runs(label)],
     output: [f"results/limits/{name}" for name in TIMELINE_TABLES]
     params: sets=timeline_set_options
     log: "results/limits/logs/timeline.log"
-    shell: "{PYTHON} -m analysis.confidence.timeline {params.sets} -o results/limits > {log} 2>&1"
+    shell: "{PYTHON} -m analysis timeline {params.sets} -o results/limits > {log} 2>&1"
 
 
 rule pulse_seeds:
-    """`python3 -m analysis.confidence.pulse_seeds`: major-pulse counts per lambda/H across seeds, later drops."""
+    """`python3 -m analysis pulse-seeds`: major-pulse counts per lambda/H across seeds, later drops."""
     input: [metrics_table(sweep) for sweep in LIMITS.get("pulses", [])]
     output: [f"results/limits/{name}" for name in PULSE_SEEDS_TABLES]
     params: cell=lambda wc: f"{LIMITS['timeline']['cell']['nu']} {LIMITS['timeline']['cell']['f']}"
     log: "results/limits/logs/pulse_seeds.log"
-    shell: "{PYTHON} -m analysis.confidence.pulse_seeds {input} --cell {params.cell} -o results/limits > {log} 2>&1"
+    shell: "{PYTHON} -m analysis pulse-seeds {input} --cell {params.cell} -o results/limits > {log} 2>&1"
 
 
 rule fig_mesh_limit:

@@ -8,6 +8,7 @@ import sys
 from figure_support import PAPER, ROOT, call, command
 
 sys.path.insert(0, str(ROOT))
+from analysis import cli  # noqa: E402
 from analysis.confidence import ensemble as ensemble_module  # noqa: E402
 from analysis.confidence import envelope as envelope_module  # noqa: E402
 
@@ -33,7 +34,7 @@ def write_tables(folder):
              "elements_per_H": 64}
             for (nu, f), values in SEEDS.items() for seed, c in enumerate(values, start=1)]
     write_csv(folder / "all_metrics.csv", runs)
-    assert ensemble_module.main([str(folder / "all_metrics.csv"), "--reference", str(folder / "ref.csv"),
+    assert cli.main(["ensemble", str(folder / "all_metrics.csv"), "--reference", str(folder / "ref.csv"),
                                  "-o", str(folder)]) == 0
     write_csv(folder / "h32.csv", [{"nu": nu, "f": f, "celerity": values[0] * 1.08, "celerity_reason": "ok"}
                                    for (nu, f), values in SEEDS.items()])
@@ -41,7 +42,7 @@ def write_tables(folder):
                                    for (nu, f), values in SEEDS.items()])
     spec = {"variants": [{"factor": "mesh", "label": "H/32", "table": str(folder / "h32.csv"),
                           "base": str(folder / "h64.csv")}]}
-    assert envelope_module.main(["--ensemble", str(folder / "ensemble.csv"), "--spec", json.dumps(spec),
+    assert cli.main(["envelope", "--ensemble", str(folder / "ensemble.csv"), "--spec", json.dumps(spec),
                                  "-o", str(folder)]) == 0
     (folder / "flutter.txt").write_text("0 nan nan\n0.2 1.0 inf\n0.45 1.0 inf\n")
     return folder

@@ -8,6 +8,7 @@ import statistics
 
 import pytest
 
+from analysis import cli
 from analysis.confidence import ensemble
 from analysis.core.errors import InputError
 from analysis.tables.reference import ReferenceCell
@@ -125,7 +126,7 @@ def test_cli_writes_every_table(tmp_path):
     reference = tmp_path / "ref.csv"
     reference.write_text("nu,f,celerity_m_per_s\n0.2,1.5,1.0\n")
     out = tmp_path / "out"
-    assert ensemble.main([str(metrics), "--reference", str(reference), "-o", str(out)]) == 0
+    assert cli.main(["ensemble", str(metrics), "--reference", str(reference), "-o", str(out)]) == 0
     table = list(csv.DictReader(open(out / "ensemble.csv")))
     assert len(table) == 1 and float(table[0]["celerity_mean"]) == pytest.approx(1.0)
     assert table[0]["n_front"] == "3" and table[0]["within_tol_mean"] == "true"
@@ -138,5 +139,5 @@ def test_cli_names_a_missing_column_and_writes_nothing(tmp_path, capsys):
     metrics = tmp_path / "all_metrics.csv"
     metrics.write_text("nu,f,celerity\n0.2,1.5,1.0\n")
     out = tmp_path / "out"
-    assert ensemble.main([str(metrics), "-o", str(out)]) == 2
+    assert cli.main(["ensemble", str(metrics), "-o", str(out)]) == 2
     assert "seed" in capsys.readouterr().err and not out.exists()

@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from analysis import cli
 from analysis.confidence import envelope
 from analysis.core.errors import InputError
 
@@ -77,10 +78,10 @@ def test_cli(tmp_path):
     base = write_csv(tmp_path / "b.csv", [{**run, "celerity": 1.06}])
     spec = json.dumps({"variants": [{"factor": "mesh", "label": "H/32", "table": table, "base": base}]})
     out = tmp_path / "out"
-    assert envelope.main(["--ensemble", ensemble, "--spec", spec, "-o", str(out)]) == 0
+    assert cli.main(["envelope", "--ensemble", ensemble, "--spec", spec, "-o", str(out)]) == 0
     (row,) = csv.DictReader(open(out / "envelope.csv"))
     assert row["status"] == "inside" and float(row["shift_mesh"]) == pytest.approx(-0.10)
     assert json.loads((out / "envelope_summary.json").read_text())["inside"] == 1
     bad = json.dumps({"variants": [{"factor": "seed", "label": "x", "table": table, "base": base}]})
-    assert envelope.main(["--ensemble", ensemble, "--spec", bad, "-o", str(tmp_path / "bad")]) == 2
+    assert cli.main(["envelope", "--ensemble", ensemble, "--spec", bad, "-o", str(tmp_path / "bad")]) == 2
     assert not (tmp_path / "bad").exists()

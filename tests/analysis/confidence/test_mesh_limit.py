@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from analysis import cli
 from analysis.confidence import mesh_limit
 from analysis.tables.reference import ReferenceCell
 
@@ -111,13 +112,13 @@ def test_cli_writes_every_file_or_none(tmp_path, capsys):
         write_table(tmp_path / f"h{n}.csv", rows)
         args += ["--mesh", f"{n}={tmp_path / f'h{n}.csv'}"]
     out = tmp_path / "out"
-    assert mesh_limit.main(args + ["--reference", str(reference), "-o", str(out)]) == 0
+    assert cli.main(["mesh-limit"] + args + ["--reference", str(reference), "-o", str(out)]) == 0
     assert sorted(p.name for p in out.iterdir()) == ["mesh_limit.csv", "mesh_limit.md", "mesh_limit.tex",
                                                      "mesh_limit_summary.json"]
     summary = json.loads((out / "mesh_limit_summary.json").read_text())
     assert summary["meshes"] == [32, 64, 128] and summary["cells"] == 2
     bad = tmp_path / "bad"
-    assert mesh_limit.main(args[:4] + ["--reference", str(reference), "-o", str(bad)]) == 2
+    assert cli.main(["mesh-limit"] + args[:4] + ["--reference", str(reference), "-o", str(bad)]) == 2
     assert "at least three meshes" in capsys.readouterr().err and not bad.exists()
     with pytest.raises(SystemExit):
-        mesh_limit.main(["--mesh", "x=1", "-o", str(bad)])
+        cli.main(["mesh-limit", "--mesh", "x=1", "-o", str(bad)])

@@ -5,6 +5,7 @@ import math
 
 import pytest
 
+from analysis import cli
 from analysis.confidence import pulse_seeds
 
 
@@ -53,7 +54,7 @@ def test_cli_names_the_missing_cell(tmp_path, capsys):
     row = run(2.0, 1, 1, 1, nu=0.3)
     table.write_text(",".join(row) + "\n" + ",".join(str(v) for v in row.values()) + "\n")
     out = tmp_path / "out"
-    assert pulse_seeds.main([str(table), "-o", str(out)]) == 2
+    assert cli.main(["pulse-seeds", str(table), "-o", str(out)]) == 2
     assert "no run of the cell nu=0.2 f=1.5" in capsys.readouterr().err and not out.exists()
-    assert pulse_seeds.main([str(table), "--cell", "0.3", "1.5", "-o", str(out)]) == 0
+    assert cli.main(["pulse-seeds", str(table), "--cell", "0.3", "1.5", "-o", str(out)]) == 0
     assert (out / "pulse_seeds_summary.json").exists()

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from analysis import cli
 from analysis.confidence import timeline
 from synthetic_run import Pulse, paper_case
 
@@ -73,5 +74,5 @@ def test_runs_of_two_cells_are_refused():
 def test_cli_names_a_missing_metrics_file_and_writes_nothing(tmp_path, capsys):
     (tmp_path / "empty").mkdir()
     out = tmp_path / "out"
-    assert timeline.main(["--set", "seeds", str(tmp_path / "empty"), "-o", str(out)]) == 2
+    assert cli.main(["timeline", "--set", "seeds", str(tmp_path / "empty"), "-o", str(out)]) == 2
     assert "metrics.json: cannot read" in capsys.readouterr().err and not out.exists()

@@ -7,6 +7,7 @@ import math
 
 import pytest
 
+from analysis import cli
 from analysis.theory import elastic, supersonic
 from analysis.confidence import timestep_limit
 from analysis.tables.reference import ReferenceCell
@@ -105,12 +106,12 @@ def test_cli_writes_every_file_or_none(tmp_path, capsys):
     reference = tmp_path / "ref.csv"
     reference.write_text("nu,f,celerity_m_per_s\n0.45,1.0,-2.523\n0.2,1.5,0.882\n")
     out = tmp_path / "out"
-    assert timestep_limit.main([str(table), "--reference", str(reference), "-o", str(out)]) == 0
+    assert cli.main(["timestep-limit", str(table), "--reference", str(reference), "-o", str(out)]) == 0
     assert json.loads((out / "timestep_limit_summary.json").read_text())["status_counts"]["converging"] == 1
     assert len(list(out.iterdir())) == 5
     reference.write_text("nu,f,celerity_m_per_s\n0.2,1.5,0.882\n")
     bad = tmp_path / "bad"
-    assert timestep_limit.main([str(table), "--reference", str(reference), "-o", str(bad)]) == 2
+    assert cli.main(["timestep-limit", str(table), "--reference", str(reference), "-o", str(bad)]) == 2
     assert "no run of a cell published with a backward celerity" in capsys.readouterr().err
     assert not bad.exists()
     assert math.isfinite(timestep_limit.adams_celerity(0.49, 0.8))
