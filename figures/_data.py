@@ -9,17 +9,12 @@ read here after that check. Every problem with an input is the analysis package'
 """
 import json
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-from analysis.core.errors import InputError  # noqa: E402
-from analysis.core.io import load_run  # noqa: E402
-from analysis.core.table_csv import parse_cell, read_table  # noqa: E402
+from analysis.core.errors import InputError
+from analysis.core.io import load_run
+from analysis.core.table_csv import parse_cell, read_table
 
 __all__ = ["InputError", "Run", "open_run", "read_csv", "read_flutter",
            "read_json", "select"]

@@ -27,10 +27,9 @@ import numpy as np
 import _style
 from _data import InputError, read_csv
 
+from analysis.theory import elastic, supersonic
+
 ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-from analysis.theory import elastic, supersonic  # noqa: E402
 
 # (column, label, folder under --results, required row values, plot style)
 SERIES = [

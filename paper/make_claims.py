@@ -29,8 +29,7 @@ import sys
 from collections import Counter
 from dataclasses import asdict, dataclass
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, label, labelled_paths, latex_number, read_rows, write_atomically  # noqa: E402
+from table_io import InputError, label, labelled_paths, latex_number, read_rows, write_atomically
 
 #: name -> (sweep table it is, columns it must have).
 TABLES = {

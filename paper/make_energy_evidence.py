@@ -14,15 +14,12 @@ than the others is an error (exit 2) naming the file.
 """
 import argparse
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from analysis.metrics.energy import energy_balance_error  # noqa: E402
-from analysis.core.io import load_run  # noqa: E402
-from numbers_tex import ENERGY_MACRO_NAMES, render  # noqa: E402
-from table_io import InputError, write_atomically  # noqa: E402
+from analysis.metrics.energy import energy_balance_error
+from analysis.core.io import load_run
+from numbers_tex import ENERGY_MACRO_NAMES, render
+from table_io import InputError, write_atomically
 
 #: The runs, as (option, macro suffix, hht_alpha must be zero, contact weighting or None: any).
 ROLES = (("alpha_zero", "AlphaZero", True, None), ("alpha", "Alpha", False, "alpha"),

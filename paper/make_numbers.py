@@ -25,15 +25,13 @@ Only selection and formatting happen here; every value comes from the inputs.
 import argparse
 import json
 import math
-import os
 import statistics
 import sys
 from collections import Counter
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from numbers_tex import MACRO_NAMES, render  # noqa: E402
-from table_io import InputError, read_rows, write_atomically  # noqa: E402
-from table_io import label as table_label  # noqa: E402
+from numbers_tex import MACRO_NAMES, render
+from table_io import InputError, read_rows, write_atomically
+from table_io import label as table_label
 
 SUMMARY_KEYS = {  # macro: (summary.json key, kind); a fraction is printed in percent
     "cellsTotal": ("cells_total", "count"),

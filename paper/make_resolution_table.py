@@ -20,13 +20,10 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
-import statistics
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis.tables.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
+from table_io import InputError, labelled_paths, read_rows, write_atomically
+from analysis.tables.aggregate import summarize
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match",
             "category_match", "reproduced")

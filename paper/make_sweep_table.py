@@ -22,11 +22,9 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, label, labelled_paths, latex_number, read_rows, write_atomically  # noqa: E402
+from table_io import InputError, label, labelled_paths, latex_number, read_rows, write_atomically
 
 #: column -> (heading, kind, format): kind 'param' sorts rows; format is a str.format spec or
 #: 'text' / 'yesno' / 'label' (underscores become spaces).

@@ -17,12 +17,10 @@ opening wave (e.g. no opening) with a section sign, a run that did not complete 
 """
 import argparse
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, label, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis.fronts import default_rule  # noqa: E402  (table_io puts the repository on the path
+from table_io import InputError, label, labelled_paths, read_rows, write_atomically
+from analysis.fronts import default_rule
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match",
             "regime_match", "category_match", "reproduced", "celerity_quality",

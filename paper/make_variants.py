@@ -14,11 +14,9 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import labelled_paths, write_atomically  # noqa: E402
+from table_io import labelled_paths, write_atomically
 
 
 SYMBOLS = {"dt": r"$\Delta t$", "c_s": r"$c_s$", "2x2": r"$2\times2$"}

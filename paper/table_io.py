@@ -4,14 +4,12 @@ writes."""
 from __future__ import annotations
 
 import os
-import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
-from analysis.core.errors import InputError  # noqa: E402,F401
-from analysis.metrics.regime import category_label  # noqa: E402
-from analysis.core.table_csv import read_table as read_rows  # noqa: E402,F401
+from analysis.core.errors import InputError  # noqa: F401
+from analysis.metrics.regime import category_label
+from analysis.core.table_csv import read_table as read_rows  # noqa: F401
 
 
 #: How an end reason reads; categories read as analysis.metrics.regime.CATEGORY_LABELS says (e.g. `no_slip`

@@ -13,15 +13,13 @@ the pipeline made. Nothing is measured here and nothing under study/results is w
 """
 import argparse
 import math
-import os
 import sys
 from pathlib import Path
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from analysis.tables import aggregate as agg  # noqa: E402
-from analysis.core.errors import InputError  # noqa: E402
-from analysis.tables.reference import cell_key, read_reference  # noqa: E402
-from analysis.core.table_csv import read_table  # noqa: E402
+from analysis.tables import aggregate as agg
+from analysis.core.errors import InputError
+from analysis.tables.reference import cell_key, read_reference
+from analysis.core.table_csv import read_table
 
 #: Columns aggregate derives: dropped from the committed rows so that the current formulas make them.
 DERIVED = set(agg.DERIVED_COLUMNS)

@@ -40,8 +40,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-from analysis.metrics.regime import category_label  # noqa: E402
+from analysis.metrics.regime import category_label
 
 #: metrics.json keys shown per run, when present, and their column headings.
 RUN_KEYS = {"category": "category", "regime": "regime", "onset_time": "slip onset (s)",

@@ -3,14 +3,10 @@ analysis.confidence.ensemble and analysis.confidence.envelope, and the generated
 it: for tests/figures/test_how_sure.py and the full report build of test_paper.py."""
 import csv
 import json
-import sys
 
-from figure_support import PAPER, ROOT, call, command
+from figure_support import PAPER, call, command
 
-sys.path.insert(0, str(ROOT))
-from analysis import cli  # noqa: E402
-from analysis.confidence import ensemble as ensemble_module  # noqa: E402
-from analysis.confidence import envelope as envelope_module  # noqa: E402
+from analysis import cli
 
 REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
 SEEDS = {(0.2, 1.5): [0.86, 0.85, 0.87], (0.45, 1.0): [-2.68, -2.66, 1.0], (0.0, 1.1): [0.99, 1.01, 0.97]}

@@ -2,14 +2,12 @@
 meshes, one backward cell at four time steps and two seeds, a Fig. 3 timeline, pulse counts) run
 through analysis.confidence.mesh_limit, timestep_limit, timeline and pulse_seeds: for
 tests/figures/test_how_sure_limits.py and the full report build of test_paper.py."""
-import sys
 
-from figure_support import PAPER, ROOT, call, command
+from figure_support import PAPER, call, command
 from how_sure_inputs import write_csv
 
-sys.path.insert(0, str(ROOT))
-from analysis import cli  # noqa: E402
-from analysis.confidence import mesh_limit, pulse_seeds, timeline, timestep_limit  # noqa: E402
+from analysis import cli
+from analysis.confidence import timeline
 
 REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
 MESHES = {32: {(0.2, 1.5): 0.84, (0.45, 1.0): -2.68, (0.0, 1.1): 0.99},

@@ -13,11 +13,10 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from analysis.tables import aggregate
 from analysis.metrics import pulses
-from analysis.theory import elastic  # noqa: E402
-from analysis.tables.reference import ReferenceCell  # noqa: E402
+from analysis.theory import elastic
+from analysis.tables.reference import ReferenceCell
 
 E, RHO, H = 1000.0, 1000.0, 25.0
 PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
