@@ -40,6 +40,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import analysis
 from analysis.metrics.regime import category_label
 
 #: metrics.json keys shown per run, when present, and their column headings.
@@ -271,7 +272,7 @@ def runs_html(runs: list[dict]) -> str:
 
 
 def provenance_html(runs: list[dict]) -> str:
-    """Pipeline commit and what wrote the runs (solver version and commit as the metrics report them)."""
+    """Project version, pipeline commit and what wrote the runs (solver version and commit as the metrics report them)."""
     root = Path(__file__).resolve().parents[2]
     try:
         commit = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty"],
@@ -283,7 +284,7 @@ def provenance_html(runs: list[dict]) -> str:
         metrics = read_json(Path(run["dir"]) / "metrics.json")
         writers.add(tuple(str(metrics.get(k, "?")) for k in ("slidewave_version", "git_commit")))
     items = [f"generated {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M UTC}",
-             f"pipeline commit {html.escape(commit)}",
+             f"slidewave {html.escape(analysis.__version__)} (analysis), pipeline commit {html.escape(commit)}",
              f"Python {platform.python_version()} on {html.escape(platform.node())}"]
     items += [f"runs written by slidewave {html.escape(v)} (commit {html.escape(c)})" for v, c in sorted(writers)]
     return "<ul>" + "".join(f"<li>{item}</li>" for item in items) + "</ul>"
