@@ -75,8 +75,7 @@ def _aggregate(args: argparse.Namespace) -> int:
     _refuse_input_as_output(args.output, list(args.metrics) + [args.reference])
     metrics = [agg.load_metrics(path) for path in args.metrics]
     table_metrics = agg.select(metrics, agg.parse_selection(args.select))
-    flutter = agg.read_flutter(args.flutter) if args.flutter else None
-    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance, flutter)
+    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance)
     write_files({args.output / name: text for name, text in files.items()})
     print(agg.summary_line(summary) + f" -> {args.output}")
     return 0
@@ -209,8 +208,6 @@ def build_parser() -> argparse.ArgumentParser:
     _reference_options(p)
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value enter Table 1 (repeatable), e.g. elements_per_H=32")
-    p.add_argument("--flutter", type=Path, help="flutter boundary (flutter-boundary output): adds the "
-                   "column inside_flutter_wedge to all_metrics.csv")
     p.set_defaults(handler=_aggregate)
 
     p = commands.add_parser("compare", help="check a table1.csv against the published celerities")

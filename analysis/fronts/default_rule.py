@@ -47,6 +47,16 @@ def direction(result: RuleResult) -> int:
     return int(math.copysign(1, result.celerity)) if math.isfinite(result.celerity) else 0
 
 
+#: The keys `celerity_metrics` returns, in its order (analysis/README.md, "Metric keys").
+CELERITY_KEYS = (
+    "celerity", "celerity_over_cs", "celerity_reason", "celerity_window", "celerity_window_start",
+    "celerity_window_end", "celerity_stderr", "celerity_r2", "celerity_rms", "celerity_n_fronts",
+    "celerity_n_points", "celerity_n_counter_fronts", "celerity_n_secondary_fronts", "celerity_drift",
+    "celerity_frame_shift", "celerity_aliasing_risk", "celerity_quality", "celerity_xcorr",
+    "celerity_xcorr_peak", "celerity_agreement", "celerity_opening_window",
+    "celerity_window_sensitivity", "celerity_high_threshold", "celerity_threshold_sensitivity")
+
+
 def celerity_metrics(by_rule: dict[str, RuleResult], high_threshold: RuleResult, *, x: np.ndarray,
                      t: np.ndarray, v: np.ndarray, c_s: float, output_interval: float,
                      pulse_spacing: float, window_length: float) -> dict[str, Any]:

@@ -266,6 +266,11 @@ def _opening_pulse_rules(t: np.ndarray, v: np.ndarray, u_y: np.ndarray, front_ma
     return out
 
 
+#: The keys `rule_metrics` returns, in its order.
+RULE_METRIC_KEYS = ("celerity_rule_default",) + tuple(
+    f"celerity_rule_{name}{suffix}" for name in RULES for suffix in ("", "_window", "_deceleration", "_reason"))
+
+
 def rule_metrics(results: dict[str, RuleResult], default_rule: str = DEFAULT_RULE) -> dict:
     """Metrics keys of the rules: celerity_rule_<name>, _window, _deceleration, _reason, and
     celerity_rule_default."""

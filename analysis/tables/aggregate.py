@@ -19,9 +19,10 @@ Outputs (all written together or not at all):
 - ``summary.json``: cells_total, cells_compared, cells_missing, within_tolerance, sign_matches,
   regime_matches, category_matches, reproduced, median_abs_deviation, max_abs_deviation, tolerance,
   missing_cells, category_mismatches (the compared cells whose category differs, "nu=N f=F").
-- ``all_metrics.csv``: one row per metrics file, every scalar key, then the columns derived from
-  them for tables and figures (``DERIVED_COLUMNS``, see ``derived_columns``), so that ``paper/`` and
-  ``figures/`` only select and format.
+- ``all_metrics.csv``: one row per metrics file, every scalar key as `measure` wrote it (a run's
+  derived quantities, e.g. ``first_drop_duration`` or ``inside_flutter_wedge``, are metrics of
+  ``analysis.metrics.measure``: an aggregate only aggregates), so that ``paper/`` and ``figures/``
+  only select and format.
 """
 
 from __future__ import annotations
@@ -41,8 +42,6 @@ TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime",
                   "min_T_over_N", "published_category", "category_match", "reproduced",
                   "celerity_quality", "celerity_window_sensitivity", "end_reason")
 DEFAULT_TOLERANCE = 0.05
-DERIVED_COLUMNS = ("celerity_over_cs", "first_drop_start_after_onset", "first_drop_duration",
-                   "first_drop_complete", "inside_flutter_wedge")
 
 
 # --------------------------------------------------------------------------------------------------
@@ -110,79 +109,6 @@ def _matches(value: Any, wanted: str) -> bool:
 def select(metrics: list[dict[str, Any]], conditions: list[tuple[str, str]]) -> list[dict[str, Any]]:
     """Metrics whose every `key` equals `value` (numbers compared as numbers)."""
     return [m for m in metrics if all(k in m and _matches(m[k], w) for k, w in conditions)]
-
-
-# --------------------------------------------------------------------------------------------------
-# Columns derived from a run's metrics
-
-
-def read_flutter(path: str | Path) -> list[tuple[float, float, float]]:
-    """[(nu, f_lower, f_upper)] of `python3 -m analysis flutter-boundary` output (nan: no wedge)."""
-    try:
-        with open(path) as stream:
-            lines = [line.split() for line in stream if line.strip() and not line.startswith("#")]
-        return [(float(fields[0]), float(fields[1]), float(fields[2])) for fields in lines]
-    except OSError as err:
-        raise InputError(f"{path}: cannot read the flutter boundary ({err.strerror})") from None
-    except (ValueError, IndexError) as err:
-        raise InputError(f"{path}: not a flutter boundary 'nu f_lower f_upper' per line ({err})") from None
-
-
-def inside_flutter_wedge(boundary: list[tuple[float, float, float]], nu: float, f: float) -> bool | None:
-    """True when (nu, f) lies strictly inside the flutter wedge of steady sliding (Martins et al.
-    1995), its bounds interpolated linearly in nu between the tabulated values (a nan bound: the
-    nearer tabulated value); False outside or where there is no wedge; None when nu lies outside
-    the tabulated range."""
-    below = [b for b in boundary if b[0] <= nu + 1e-12]
-    above = [b for b in boundary if b[0] >= nu - 1e-12]
-    if not below or not above:
-        return None
-    a, b = below[-1], above[0]
-    w = 0.0 if b[0] == a[0] else (nu - a[0]) / (b[0] - a[0])
-    lower, upper = ((1 - w) * a[k] + w * b[k] if math.isfinite(a[k]) and math.isfinite(b[k])
-                    else (b[k] if w > 0.5 else a[k]) for k in (1, 2))
-    return math.isfinite(lower) and lower < f < upper  # False for upper = nan
-
-
-def _difference(m: dict[str, Any], later: str, earlier: str) -> float | None:
-    a, b = m.get(later), m.get(earlier)
-    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in (a, b)):
-        return None
-    return float(a) - float(b)
-
-
-def _first_drop_complete(m: dict[str, Any]) -> bool | None:
-    n_drops, n_complete = m.get("n_drops"), m.get("n_complete_drops")
-    if not all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
-               for x in (n_drops, n_complete)) or n_drops < 1:
-        return None
-    return n_complete >= 1
-
-
-def derived_columns(m: dict[str, Any],
-                    flutter: list[tuple[float, float, float]] | None = None) -> dict[str, Any]:
-    """The DERIVED_COLUMNS of one run (None where an input is missing or undefined).
-
-    celerity_over_cs = celerity / c_s (-); first_drop_start_after_onset = first_drop_start_time -
-    onset_time (s); first_drop_duration = first_drop_bottom_time - first_drop_start_time (s);
-    first_drop_complete = n_complete_drops >= 1 (drops are found in time order and only the last can
-    be cut by the end of the run: False means the first drop's bottom, duration and min T/N are
-    those reached when the run stopped), None without a drop; inside_flutter_wedge
-    (inside_flutter_wedge; only with a flutter boundary).
-    """
-    c, c_s = m.get("celerity"), m.get("c_s")
-    ratio = None
-    if (isinstance(c, (int, float)) and isinstance(c_s, (int, float)) and math.isfinite(c)
-            and math.isfinite(c_s) and c_s > 0):
-        ratio = c / c_s
-    return {
-        "celerity_over_cs": ratio,
-        "first_drop_start_after_onset": _difference(m, "first_drop_start_time", "onset_time"),
-        "first_drop_duration": _difference(m, "first_drop_bottom_time", "first_drop_start_time"),
-        "first_drop_complete": _first_drop_complete(m),
-        "inside_flutter_wedge": (inside_flutter_wedge(flutter, _number(m["nu"]), _number(m["f"]))
-                                 if flutter else None),
-    }
 
 
 # --------------------------------------------------------------------------------------------------
@@ -364,8 +290,7 @@ def all_metricscsv_text(metrics: list[dict[str, Any]]) -> str:
 
 
 def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]],
-              reference: list[ReferenceCell], tolerance: float,
-              flutter: list[tuple[float, float, float]] | None = None) -> tuple[dict[str, str], dict[str, Any]]:
+              reference: list[ReferenceCell], tolerance: float) -> tuple[dict[str, str], dict[str, Any]]:
     """All output texts by file name, and the summary.
 
     Parameters
@@ -378,8 +303,6 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         The published cells.
     tolerance
         Relative tolerance of within_tol.
-    flutter
-        The flutter boundary [(nu, f_lower, f_upper)] (read_flutter) for inside_flutter_wedge.
     """
     if not tolerance > 0:
         raise InputError(f"tolerance must be > 0 (got {tolerance})")
@@ -390,6 +313,6 @@ def aggregate(metrics: list[dict[str, Any]], table_metrics: list[dict[str, Any]]
         "table1.md": table1_markdown(rows, summary),
         "table1.tex": table1_latex(rows),
         "summary.json": json.dumps(summary, indent=2) + "\n",
-        "all_metrics.csv": all_metricscsv_text([{**m, **derived_columns(m, flutter)} for m in metrics]),
+        "all_metrics.csv": all_metricscsv_text(metrics),
     }
     return files, summary

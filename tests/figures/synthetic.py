@@ -15,7 +15,7 @@ import numpy as np
 
 from analysis.tables import aggregate
 from analysis.metrics import pulses
-from analysis.theory import elastic
+from analysis.theory import elastic, flutter
 from analysis.tables.reference import ReferenceCell
 
 E, RHO, H = 1000.0, 1000.0, 25.0
@@ -182,8 +182,12 @@ def metrics_rows():
             r.update(celerity=None, regime=None, below_sqrt2_cs=None, pulse_count=None, pulse_spacing=None,
                      pulse_spacing_theory=math.nan)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
-        # What `analysis aggregate` adds to all_metrics.csv.
-        r.update(aggregate.derived_columns(r, flutter_boundary()))
+        # The metrics measure derives from the others (analysis.metrics.measure), as it writes them.
+        c = r["celerity"]
+        r.update(celerity_over_cs=None if c is None else c / c_s,
+                 first_drop_start_after_onset=r["first_drop_start_time"] - r["onset_time"],
+                 first_drop_duration=r["first_drop_bottom_time"] - r["first_drop_start_time"],
+                 first_drop_complete=r["n_complete_drops"] >= 1, inside_flutter_wedge=flutter.inside_wedge(nu, f))
         return r
 
     return [row(nu, f, **{parameter: value} if parameter else {})
@@ -258,11 +262,6 @@ FLUTTER = """# nu f_lower f_upper
 0.45 nan nan
 """
 
-
-def flutter_boundary():
-    """FLUTTER as aggregate.read_flutter returns it."""
-    return [tuple(float(x) for x in line.split()) for line in FLUTTER.splitlines()
-            if line.strip() and not line.startswith("#")]
 
 
 #: The three runs of paper/make_energy_evidence.py: option -> (hht_alpha, contact weighting).

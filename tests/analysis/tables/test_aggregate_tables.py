@@ -1,5 +1,6 @@
-"""analysis.tables.aggregate: what the tables say about runs that did not complete, and the columns the
-paper and figures read instead of computing them."""
+"""analysis.tables.aggregate: what the tables say about runs that did not complete, and that
+all_metrics.csv carries the metrics as measured (the paper and figures read them instead of
+computing them)."""
 
 import math
 
@@ -37,38 +38,14 @@ def test_complete_runs_leave_end_reason_empty_and_the_latex_without_a_note():
     assert "did not complete" not in files["table1.tex"] and "run ended" not in files["table1.md"]
 
 
-# A wedge opening between nu = 0.1 and 0.3, closing at 0.4 (nan: no wedge), as flutter-boundary writes.
-BOUNDARY = [(0.0, math.nan, math.nan), (0.1, 1.0, 3.0), (0.3, 2.0, 5.0), (0.4, math.nan, math.nan)]
-
-
-@pytest.mark.parametrize("nu, f, inside", [
-    (0.1, 2.0, True), (0.1, 1.0, False), (0.1, 3.5, False),  # a tabulated nu: bounds 1 and 3, strict
-    (0.2, 1.4, False), (0.2, 1.6, True), (0.2, 3.9, True), (0.2, 4.1, False),  # interpolated: 1.5, 4
-    (0.0, 1.5, False), (0.4, 1.5, False),  # no wedge there
-    (0.35, 2.5, True),  # between a bound and nan: the nearer tabulated bounds (0.3's; 0.4's at w > 0.5)
-    (0.45, 1.5, None), (-0.1, 1.5, None),  # outside the table
-])
-def test_inside_flutter_wedge(nu, f, inside):
-    assert agg.inside_flutter_wedge(BOUNDARY, nu, f) is inside
-
-
-def test_derived_columns_are_the_formulas_of_their_docstring():
-    m = metrics(0.2, 1.5, 1.2, c_s=0.6, onset_time=700.0, first_drop_start_time=900.0,
-                first_drop_bottom_time=950.5)
-    assert agg.derived_columns(m, BOUNDARY) == {"celerity_over_cs": 2.0, "first_drop_start_after_onset": 200.0,
-                                                "first_drop_duration": 50.5, "first_drop_complete": None,
-                                                "inside_flutter_wedge": False}
-    empty = agg.derived_columns(metrics(0.2, 1.5, None, c_s=0.6, onset_time=None))
-    assert empty == dict.fromkeys(agg.DERIVED_COLUMNS)
-
-
-def test_all_metrics_csv_carries_the_derived_columns():
-    runs = [metrics(0.2, 1.6, 0.9, c_s=0.6)]
-    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+def test_all_metrics_csv_carries_every_metric_as_measured():
+    # A run's derived quantities are metrics of analysis.metrics.measure: aggregate only aggregates.
+    runs = [metrics(0.2, 1.6, 0.9, c_s=0.6, celerity_over_cs=1.5, inside_flutter_wedge=True)]
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
     header, row = files["all_metrics.csv"].splitlines()
     values = dict(zip(header.split(","), row.split(",")))
     assert values["celerity_over_cs"] == "1.5" and values["inside_flutter_wedge"] == "true"
-    assert values["first_drop_duration"] == ""
+    assert header.split(",") == ["metrics_file", *runs[0]]
 
 
 def test_the_tables_read_back_as_written(tmp_path):
@@ -77,7 +54,7 @@ def test_the_tables_read_back_as_written(tmp_path):
     from analysis.core.table_csv import read_table
 
     runs = [metrics(0.2, 1.5, 2.1, complete=False, end_reason="contact_not_converged", c_s=0.7)]
-    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05, BOUNDARY)
+    files, _ = agg.aggregate(runs, runs, REFERENCE, 0.05)
     (tmp_path / "table1.csv").write_text(files["table1.csv"])
     rows = read_table(tmp_path / "table1.csv", ("nu", "celerity", "within_tol", "end_reason"))
     assert rows[0]["celerity"] == 2.1 and rows[0]["within_tol"] is False
@@ -113,9 +90,3 @@ def test_the_published_category_follows_the_sign_and_regime_of_the_published_cel
     assert agg.category_matches(category, published)
     assert not agg.category_matches("opening_without_front", published)
 
-
-@pytest.mark.parametrize("n_drops, n_complete, complete", [(1, 0, False), (1, 1, True), (3, 2, True),
-                                                            (0, 0, None), (None, None, None)])
-def test_first_drop_complete(n_drops, n_complete, complete):
-    m = metrics(0.2, 1.5, 1.0, n_drops=n_drops, n_complete_drops=n_complete)
-    assert agg.derived_columns(m)["first_drop_complete"] is complete
