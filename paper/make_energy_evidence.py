@@ -19,7 +19,8 @@ import sys
 from analysis.metrics.energy import energy_balance_error
 from analysis.core.io import load_run
 from numbers_tex import ENERGY_MACRO_NAMES, render
-from table_io import InputError, write_atomically
+from analysis.core.atomic import write_file
+from table_io import InputError
 
 #: The runs, as (option, macro suffix, hht_alpha must be zero, contact weighting or None: any).
 ROLES = (("alpha_zero", "AlphaZero", True, None), ("alpha", "Alpha", False, "alpha"),
@@ -110,7 +111,7 @@ def main(argv=None):
     except InputError as err:
         print(f"make_energy_evidence.py: error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(macros, [getattr(args, role) for role, *_ in ROLES],
+    write_file(args.output, render(macros, [getattr(args, role) for role, *_ in ROLES],
                                          script="paper/make_energy_evidence.py"))
     return 0
 

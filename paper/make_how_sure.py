@@ -13,10 +13,10 @@ that names the file. Deviations are printed in per cent with their sign.
 import argparse
 import sys
 
-from table_io import write_atomically
-from numbers_tex import render  # noqa: E402
-from summary_json import get, read  # noqa: E402
-from analysis.core.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.atomic import write_file
+from numbers_tex import render
+from summary_json import get, read
+from analysis.core.errors import InputError
 
 #: analysis.confidence.ensemble's systematic groups -> the macro stem of each.
 GROUP_STEMS = {"supersonic backward": "Supersonic", "nu 0-0.1, f 1.1-1.2": "LowNu",
@@ -120,7 +120,7 @@ def main(argv=None):
     except InputError as err:
         print(f"error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(macros, sources, script="paper/make_how_sure.py"))
+    write_file(args.output, render(macros, sources, script="paper/make_how_sure.py"))
     print(f"{len(macros)} macros -> {args.output}")
     return 0
 

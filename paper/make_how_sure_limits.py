@@ -12,10 +12,10 @@ analysis modules from their counts. A missing key is an error that names the fil
 import argparse
 import sys
 
-from table_io import write_atomically
-from numbers_tex import render  # noqa: E402
-from summary_json import get, read  # noqa: E402
-from analysis.core.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.atomic import write_file
+from numbers_tex import render
+from summary_json import get, read
+from analysis.core.errors import InputError
 
 #: analysis.confidence.timeline's events -> macro stem.
 EVENT_STEMS = {"onset_time": "Onset", "localization_time": "Localization", "celerity_window_start": "Window",
@@ -123,7 +123,7 @@ def main(argv=None):
         print(f"error: {err}", file=sys.stderr)
         return 2
     sources = [args.mesh, args.timestep, args.timeline, args.pulses]
-    write_atomically(args.output, render(macros, sources, script="paper/make_how_sure_limits.py"))
+    write_file(args.output, render(macros, sources, script="paper/make_how_sure_limits.py"))
     print(f"{len(macros)} macros -> {args.output}")
     return 0
 

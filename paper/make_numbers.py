@@ -30,7 +30,8 @@ import sys
 from collections import Counter
 
 from numbers_tex import MACRO_NAMES, render
-from table_io import InputError, read_rows, write_atomically
+from analysis.core.atomic import write_file
+from table_io import InputError, read_rows
 from table_io import label as table_label
 
 SUMMARY_KEYS = {  # macro: (summary.json key, kind); a fraction is printed in percent
@@ -325,7 +326,7 @@ def main(argv=None):
         print(f"make_numbers.py: error: {err}", file=sys.stderr)
         return 2
     sources = [args.summary, args.runs, args.grid, args.table1] + [s[2] for s in args.sweep]
-    write_atomically(args.output, render(macros, sources))
+    write_file(args.output, render(macros, sources))
     return 0
 
 

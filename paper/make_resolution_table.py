@@ -22,7 +22,8 @@ import argparse
 import math
 import sys
 
-from table_io import InputError, labelled_paths, read_rows, write_atomically
+from analysis.core.atomic import write_file
+from table_io import InputError, labelled_paths, read_rows
 from analysis.tables.aggregate import summarize
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match",
@@ -95,7 +96,7 @@ def main(argv: list[str] | None = None) -> int:
     except (InputError, ValueError) as error:
         print(f"make_resolution_table.py: error: {error}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(sets, args.tolerance))
+    write_file(args.output, render(sets, args.tolerance))
     return 0
 
 

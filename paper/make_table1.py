@@ -19,7 +19,8 @@ import argparse
 import math
 import sys
 
-from table_io import InputError, label, labelled_paths, read_rows, write_atomically
+from analysis.core.atomic import write_file
+from table_io import InputError, label, labelled_paths, read_rows
 from analysis.fronts import default_rule
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match",
@@ -174,7 +175,7 @@ def main(argv=None):
     except (InputError, ValueError) as err:
         print(f"make_table1.py: error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(rows, other_meshes))
+    write_file(args.output, render(rows, other_meshes))
     return 0
 
 

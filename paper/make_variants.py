@@ -16,7 +16,8 @@ import argparse
 import json
 import sys
 
-from table_io import labelled_paths, write_atomically
+from analysis.core.atomic import write_file
+from table_io import labelled_paths
 
 
 SYMBOLS = {"dt": r"$\Delta t$", "c_s": r"$c_s$", "2x2": r"$2\times2$"}
@@ -67,7 +68,7 @@ def main(argv: list[str] | None = None) -> int:
              r"\begin{tabular}[b]{@{}c@{}}median\\$|$dev.$|$\end{tabular} \\",
              r"\midrule", *rows]
     lines += [r"\bottomrule", r"\end{tabular}", ""]
-    write_atomically(args.output, "\n".join(lines))
+    write_file(args.output, "\n".join(lines))
     return 0
 
 

@@ -1,10 +1,7 @@
-"""Shared by the scripts of paper/: reading the study's CSV tables, LABEL=PATH arguments and atomic
-writes."""
+"""Shared by the scripts of paper/: reading the study's CSV tables, labels, LABEL=PATH arguments.
+Files are written by the project's one atomic writer, `analysis.core.atomic.write_file`."""
 
 from __future__ import annotations
-
-import os
-import tempfile
 
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
 from analysis.core.errors import InputError  # noqa: F401
@@ -49,28 +46,3 @@ def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
             raise ValueError(f"{item!r} is not LABEL={what}")
         pairs.append((label, path))
     return pairs
-
-
-def current_umask() -> int:
-    """The process's file-mode creation mask (reading it means setting it: set it straight back)."""
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
-
-
-def write_atomically(path: str, text: str) -> None:
-    """Write `text` to `path` through a temporary file and a rename: never a partial file.
-
-    The file gets the mode of any other new file (0666 less the umask), not the temporary file's
-    0600, which the rename would keep: colleagues sharing the project folder can read the tables.
-    """
-    directory = os.path.dirname(os.path.abspath(path))
-    os.makedirs(directory, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
-        try:
-            out.write(text)
-            os.chmod(out.name, 0o666 & ~current_umask())
-        except BaseException:
-            os.unlink(out.name)
-            raise
-    os.replace(out.name, path)
