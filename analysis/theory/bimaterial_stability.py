@@ -86,11 +86,9 @@ import numpy as np
 
 from analysis.theory.interface_wave import (ElasticSolid, _as_solid, _q, generalized_rayleigh_speed,
                                      reduced_rayleigh_function)
+from analysis.theory.complex_roots import isolate_roots, winding_number
 
 __all__ = [
-    "surface_compliance",
-    "boundary_matrix",
-    "interface_matrix",
     "dispersion_function",
     "regular_dispersion_function",
     "count_growing_roots",
@@ -132,71 +130,6 @@ def _reduced_coupling(s, gamma: float):
     return np.where(np.abs(s) < _SMALL_S, rational, direct)
 
 
-def surface_compliance(c, solid, side: int) -> np.ndarray:
-    """The 2x2 matrix C of eq. (2), mu k (u_x, u_y) = C (sigma_xy, sigma_yy) at y = 0 (dimensionless).
-
-    Parameters
-    ----------
-    c : complex      phase speed (m/s), not a Rayleigh zero of the solid
-    solid : ElasticSolid or (E, nu, rho)
-    side : int       +1 for a body in y > 0, -1 for a body in y < 0
-    """
-    solid = _as_solid(solid)
-    if side not in (1, -1):
-        raise ValueError(f"side = {side!r} outside the allowed range {{+1, -1}}")
-    s = complex(c) / solid.c_s
-    q_l, q_s = (complex(q) for q in _q(s, solid.gamma))
-    r = complex(reduced_rayleigh_function(s, solid.gamma))
-    n = complex(_reduced_coupling(s, solid.gamma))
-    return np.array([[side * q_s, -1j * n], [1j * n, side * q_l]], dtype=complex) / r
-
-
-def boundary_matrix(c, solid, side: int, k: float = 1.0) -> np.ndarray:
-    """Rows (u_x, u_y, sigma_xy, sigma_yy) at y = 0 per unit potential amplitudes (A, B) (4x2).
-
-    phi = A exp(i k (x - c t) - side k q_l y), psi = B exp(i k (x - c t) - side k q_s y), with
-    u_x = phi_x + psi_y, u_y = phi_y - psi_x and Hooke's law (lambda = mu (1/gamma - 2)):
-
-        u_x = k (i A - side q_s B),                u_y = -k (side q_l A + i B),
-        sigma_xy = mu k^2 (-2 i side q_l A + (2 - s^2) B),
-        sigma_yy = mu k^2 ((2 - s^2) A + 2 i side q_s B).
-
-    Units: u in m per (m^2 of A, B), sigma in Pa per m^2; k in 1/m, c in m/s.
-    """
-    solid = _as_solid(solid)
-    s = complex(c) / solid.c_s
-    q_l, q_s = (complex(q) for q in _q(s, solid.gamma))
-    mu_k2 = solid.shear_modulus * k * k
-    b = 2.0 - s * s
-    return np.array([
-        [1j * k, -side * k * q_s],
-        [-side * k * q_l, -1j * k],
-        [-2j * side * q_l * mu_k2, b * mu_k2],
-        [b * mu_k2, 2j * side * q_s * mu_k2],
-    ], dtype=complex)
-
-
-def interface_matrix(c, upper, lower, f: float, k: float = 1.0) -> np.ndarray:
-    """4x4 matrix of conditions (1) on the amplitudes (A_1, B_1, A_2, B_2) (m^2).
-
-    Rows, all of the form k^2 x (amplitude), dimensionless: k (u_y(1) - u_y(2));
-    (sigma_yy(1) - sigma_yy(2)) / (mu_1 k); (sigma_xy(1) - sigma_xy(2)) / (mu_1 k);
-    (sigma_xy(1) + f sigma_yy(1)) / (mu_1 k). With f = 0 it is the frictionless problem of
-    ``analysis.theory.interface_wave``. An independent oracle of eq. (3): det = 0 at its roots.
-    """
-    upper, lower = _as_solid(upper), _as_solid(lower)
-    f = _check_f(f)
-    one, two = boundary_matrix(c, upper, +1, k), boundary_matrix(c, lower, -1, k)
-    zero = np.zeros(2, dtype=complex)
-    scale = 1.0 / (upper.shear_modulus * k)
-    return np.array([
-        np.concatenate([k * one[1], -k * two[1]]),
-        np.concatenate([scale * one[3], -scale * two[3]]),
-        np.concatenate([scale * one[2], -scale * two[2]]),
-        np.concatenate([scale * (one[2] + f * one[3]), zero]),
-    ])
-
-
 def _parts(s, upper: ElasticSolid, lower: ElasticSolid):
     """(q_l1, r_1, n_1, q_l2, r_2, n_2, Gamma) at s = c / c_s1."""
     s = np.asarray(s, dtype=complex)
@@ -236,110 +169,6 @@ def regular_dispersion_function(c, upper, lower, f: float):
     return result if np.ndim(result) else complex(result)
 
 
-# --- root finding -------------------------------------------------------------------------------
-
-def _edge_points(a: complex, b: complex, features: np.ndarray, n_base: int = 64,
-                 n_cluster: int = 40) -> np.ndarray:
-    """Points of the segment a -> b (a included, b not), clustered geometrically towards the point
-    of the segment nearest to each feature (the origin and the branch points): Psi varies on the
-    scale of the distance to them (|Psi| ~ |s|^3 far out, square roots at the branch points)."""
-    length = abs(b - a)
-    direction = (b - a) / length
-    t = [np.linspace(0.0, 1.0, n_base, endpoint=False)]
-    for z in features:
-        along = ((z - a) * np.conj(direction)).real / length
-        nearest = min(max(along, 0.0), 1.0)
-        distance = abs(a + nearest * (b - a) - z)
-        offsets = np.geomspace(max(distance, 1e-13 * length), length, n_cluster) / length
-        t.extend([nearest + offsets, nearest - offsets, np.array([nearest])])
-    t = np.unique(np.concatenate(t))
-    t = t[(t >= 0.0) & (t < 1.0)]
-    return a + t * (b - a)
-
-
-def _winding_number(fun, x0: float, x1: float, y0: float, y1: float, features: np.ndarray) -> int:
-    """Zeros of fun inside the rectangle (argument principle). The contour is sampled densely near
-    the features (``_edge_points``) and refined adaptively: segments whose phase change exceeds
-    0.4 rad are halved until none is left."""
-    corners = [complex(x0, y0), complex(x1, y0), complex(x1, y1), complex(x0, y1), complex(x0, y0)]
-    path = np.concatenate([_edge_points(a, b, features) for a, b in zip(corners[:-1], corners[1:])]
-                          + [np.array([corners[0]])])
-    values = fun(path)
-    for _ in range(80):
-        if not np.all(np.isfinite(values)) or np.any(values == 0):
-            raise ArithmeticError("the dispersion function vanishes or is not finite on the contour")
-        step = np.angle(values[1:] / values[:-1])
-        coarse = np.flatnonzero(np.abs(step) > 0.4)
-        if coarse.size == 0:
-            return int(round(float(np.sum(step)) / (2.0 * math.pi)))
-        if np.min(np.abs(path[coarse + 1] - path[coarse])) < 1e-15 * (x1 - x0 + y1 - y0):
-            raise ArithmeticError("argument principle: a zero lies on the contour")
-        middle = 0.5 * (path[coarse] + path[coarse + 1])
-        path = np.insert(path, coarse + 1, middle)
-        values = np.insert(values, coarse + 1, fun(middle))
-    raise ArithmeticError("argument principle: contour refinement did not converge")
-
-
-def _newton(fun, s: complex, box=None, max_iterations: int = 60) -> complex | None:
-    """Newton's method on fun from s; None if it stalls or leaves box (x0, x1, y0, y1) enlarged by
-    half its size on every side (the root sought lies in the box)."""
-    if box is not None:
-        x0, x1, y0, y1 = box
-        margin = 0.5 * max(x1 - x0, y1 - y0)
-    step = complex(math.inf)
-    for _ in range(max_iterations):
-        h = 1e-7 * max(1.0, abs(s))
-        values = fun(np.array([s, s + h, s - h]))
-        slope = complex((values[1] - values[2]) / (2.0 * h))
-        if slope == 0 or not math.isfinite(abs(slope)):
-            return None
-        step = complex(values[0]) / slope
-        s -= step
-        if box is not None and not (x0 - margin <= s.real <= x1 + margin and y0 - margin <= s.imag <= y1 + margin):
-            return None
-        if abs(step) <= 1e-15 * max(1.0, abs(s)):
-            return s
-    return s if abs(step) <= 1e-10 * max(1.0, abs(s)) else None
-
-
-def _isolate(fun, box, n_roots: int, size_floor: float, features: np.ndarray,
-             depth: int = 0) -> list[complex]:
-    """Roots of fun inside box = (x0, x1, y0, y1) holding n_roots of them (bisection + Newton)."""
-    if n_roots == 0:
-        return []
-    x0, x1, y0, y1 = box
-    if n_roots == 1:
-        root = _newton(fun, complex(0.5 * (x0 + x1), 0.5 * (y0 + y1)), box)
-        # a zero of fun inside the box is its only one (the count is 1); the bottom edge is strict,
-        # a neutral root just below it must not be taken for the growing one
-        pad = 1e-12 * max(x1 - x0, y1 - y0)
-        if root is not None and x0 - pad <= root.real <= x1 + pad and y0 < root.imag <= y1 + pad:
-            return [root]
-    if max(x1 - x0, y1 - y0) < size_floor or depth > 200:
-        centre = _newton(fun, complex(0.5 * (x0 + x1), 0.5 * (y0 + y1))) or complex(0.5 * (x0 + x1), 0.5 * (y0 + y1))
-        return [centre] * n_roots  # a multiple root (or a cluster below the floor)
-    # halve the longer side; the cut is moved off the middle if a zero lies on it
-    for fraction in (0.5, 0.4871, 0.5219, 0.4473):
-        if x1 - x0 >= y1 - y0:
-            cut = x0 + fraction * (x1 - x0)
-            halves = ((x0, cut, y0, y1), (cut, x1, y0, y1))
-        else:
-            cut = y0 + fraction * (y1 - y0)
-            halves = ((x0, x1, y0, cut), (x0, x1, cut, y1))
-        try:
-            counts = [_winding_number(fun, *half, features) for half in halves]
-        except ArithmeticError:
-            continue
-        if sum(counts) == n_roots:
-            break
-    else:
-        raise ArithmeticError("root isolation failed: inconsistent zero counts")
-    roots: list[complex] = []
-    for half, count in zip(halves, counts):
-        roots.extend(_isolate(fun, half, count, size_floor, features, depth + 1))
-    return roots
-
-
 def _search_box(upper: ElasticSolid, lower: ElasticSolid, f: float, radius: float | None,
                 bottom: float = IM_FLOOR):
     """(x0, x1, y0, y1) in s = c / c_s1: half-width W = 4 (1 + |f|) max(c_l1, c_l2) / c_s1 + 4,
@@ -355,7 +184,7 @@ def _count_in_search_box(fun, upper, lower, f, radius, features):
     for bottom in (IM_FLOOR, 3.7 * IM_FLOOR, 0.27 * IM_FLOOR):
         box = _search_box(upper, lower, f, radius, bottom)
         try:
-            return box, _winding_number(fun, *box, features)
+            return box, winding_number(fun, *box, features)
         except ArithmeticError:
             continue
     raise ArithmeticError("argument principle: zeros on every bottom edge tried")
@@ -409,7 +238,7 @@ def growing_roots(upper, lower, f: float, radius: float | None = None) -> np.nda
 
     features = _features(upper, lower)
     box, n_roots = _count_in_search_box(fun, upper, lower, f, radius, features)
-    roots = _isolate(fun, box, n_roots, size_floor=1e-10 * (box[1] - box[0]), features=features)
+    roots = isolate_roots(fun, box, n_roots, size_floor=1e-10 * (box[1] - box[0]), features=features)
     roots = [r for r in roots if r.imag > box[2]]
     return np.array(sorted((r * upper.c_s for r in roots), key=lambda r: -r.imag), dtype=complex)
 
