@@ -61,6 +61,13 @@ def time_step(c_s: float, dt_times_cs: float, dt: float | None = None) -> float:
     return dt if dt is not None else dt_times_cs / c_s
 
 
+def n_steps(t_end: float, dt: float) -> int:
+    """Stage-3 time steps to reach t_end (s) with the step dt (s): ceil(t_end / dt - 1e-9), the
+    solver's count (solver/config/run_config.cpp), so that an exact multiple up to round-off is not
+    one step more. The one step count of the Python side (scheduler estimates, tests)."""
+    return math.ceil(t_end / dt - 1e-9)
+
+
 def onset_time_estimate(*, f: float, preshear_ratio: float, p0: float, H: float, E: float,
                         nu: float, V0: float) -> float:
     """Quasi-static time (s) for T/N to grow from preshear_ratio f to f with the top moving at V0.

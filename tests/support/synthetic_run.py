@@ -19,6 +19,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from analysis.theory.elastic import n_steps
+
 E, RHO, H = 1000.0, 1000.0, 25.0
 UY_OVER_H = -1e-3
 PRESHEAR = 0.95
@@ -140,7 +142,7 @@ def build_fields(s: Scenario) -> dict:
     V0 = s.V0_over_cs * c_s
     p0 = -UY_OVER_H * H * E * (1 - s.nu) / (H * (1 + s.nu) * (1 - 2 * s.nu))
     x = np.arange(n_c) * h
-    tg = np.arange(int(math.floor(s.t_end / dt)) + 1) * dt
+    tg = np.arange(n_steps(s.t_end, dt) + 1) * dt  # the solver's steps, t = 0 included
     t = tg[:: s.interface_stride]
     v = np.zeros((t.size, n_c))
     u_y = np.zeros((t.size, n_c))
