@@ -255,8 +255,8 @@ rule paper:
         conclusions="paper/generated/conclusions.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
-        how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk
-        how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/tables.smk
+        how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/ensemble.smk
+        how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/limits.smk
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:
