@@ -295,3 +295,21 @@ def load_run(path: str | Path) -> RunData:
     return RunData(path=path, attrs=attrs, setup=setup, config_input=config_input, config=config,
                    interface=interface, global_series=GlobalSeries(**series),
                    non_finite=tuple(non_finite))
+
+
+#: The optional term-by-term HHT dissipation of a run made with `output.energy_decomposition = hht`.
+HHT_DISSIPATION = ("dissipation_hht", "dissipation_hht_gamma", "dissipation_hht_beta", "dissipation_hht_shift")
+
+
+def load_hht_dissipation(path: str | Path) -> dict[str, np.ndarray]:
+    """{name: series (J/m)} of HHT_DISSIPATION under /global of a run file that `load_run` accepts.
+
+    Raises InputError naming the file when the run was made without the decomposition.
+    """
+    import h5py
+
+    path = str(path)
+    with h5py.File(path, "r") as file:
+        if "global/dissipation_hht" not in file:
+            raise _fail(path, "no /global/dissipation_hht: run it with output.energy_decomposition = hht")
+        return {name: _read_array(file, path, f"/global/{name}", True)[0].astype(float) for name in HHT_DISSIPATION}
