@@ -49,20 +49,18 @@ import time
 for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
-import h5py
-import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
+import h5py  # noqa: E402
+import numpy as np  # noqa: E402
 
 try:
-    import getfem as gf
+    import getfem as gf  # noqa: E402,F401  (its absence is the error below)
 except ImportError:  # pragma: no cover
     sys.exit("getfem not importable: apt-get install -y --no-install-recommends python3-getfem, "
              "and run with /usr/bin/python3")
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-from analysis.theory import elastic
-from getfem_layer import OPEN, SLIP, GetfemLayer  (bench/, beside this file)
+from analysis.theory import elastic  # noqa: E402  (run with PYTHONPATH=., bench/GETFEM.md)
+from getfem_layer import OPEN, SLIP, GetfemLayer  # noqa: E402  (bench/, beside this file)
 
 
 # ----------------------------------------------------------------------------------------------

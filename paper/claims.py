@@ -223,7 +223,7 @@ def claim_mesh(tables, spec, tolerance, steps):
     rows = sorted(tables.need("mesh"), key=lambda r: r["elements_per_H"])
     s = spread([r["celerity"] for r in rows])
     categories = {r["category"] for r in rows}
-    reason = (f"at the reference point $c_p$ = " + ", ".join(f"{g(r['celerity'])} (H/{r['elements_per_H']:g})" for r in rows)
+    reason = ("at the reference point $c_p$ = " + ", ".join(f"{g(r['celerity'])} (H/{r['elements_per_H']:g})" for r in rows)
               + f" m/s, spread {pct(s)} (tolerance {pct(tolerance, 0)}), categories: "
               + ", ".join(sorted(label(c) for c in categories)))
     flips = [cell(r) for r in tables.optional("table1") or [] if finite(r["published"])

@@ -6,7 +6,7 @@
         [--finer-ensemble ensemble_summary.json --finer-mesh 128]
 
 The optional finer ensemble (the same cells at a finer mesh, config paper.envelope.finer_ensemble)
-gives the same macros with the stem `ensFiner` instead of `ens`, and \ensFinerMesh.
+gives the same macros with the stem `ensFiner` instead of `ens`, and \\ensFinerMesh.
 Every macro is a number of those files, formatted; a missing key or an unknown group is an error
 that names the file. Deviations are printed in per cent with their sign.
 """

@@ -23,7 +23,6 @@ A run ends at
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from analysis.theory import elastic

@@ -143,7 +143,6 @@ def category_of(nu, f):
 
 
 def metrics_rows():
-    rows = []
     base = dict(V0_over_cs=1e-5, lambda_over_H=2.0, elements_per_H=32, rho=1000.0,
                 integration="reduced", Uy_over_H=-0.001, preshear_ratio=0.95, hht_alpha=0.1)
 
