@@ -173,10 +173,35 @@ def build_fields(s: Scenario) -> dict:
                 dissipation=dissipation, kinetic=kinetic, elastic=elastic, residual=residual)
 
 
-def write_run(path, s: Scenario) -> dict:
-    """Write the run file of a scenario; returns build_fields(s)."""
+def write_run_file(path, attrs: dict, setup: dict, interface: dict, series: dict, *, drop_attributes=(),
+                   drop_datasets=(), compression=None, extend=None) -> None:
+    """The one writer of synthetic run files (docs/contracts.md section 2) for every test folder:
+    root `attrs`, `/setup` attributes, `/interface/<name>` and `/global/<name>` datasets given as
+    {name: (data, unit, description)}; the attributes and datasets named in `drop_*` are left out
+    (a broken file), None values are not written; `extend(file)` adds more (e.g. snapshots)."""
     import h5py
 
+    with h5py.File(path, "w") as file:
+        for key, value in attrs.items():
+            if key not in drop_attributes and value is not None:
+                file.attrs[key] = value
+        group = file.create_group("setup")
+        for key, value in setup.items():
+            if key not in drop_attributes:
+                group.attrs[key] = value
+        for group, items in (("interface", interface), ("global", series)):
+            for name, (data, unit, description) in items.items():
+                if f"/{group}/{name}" in drop_datasets:
+                    continue
+                ds = file.create_dataset(f"/{group}/{name}", data=data, compression=compression)
+                ds.attrs["unit"] = unit
+                ds.attrs["description"] = description
+        if extend is not None:
+            extend(file)
+
+
+def write_run(path, s: Scenario) -> dict:
+    """Write the run file of a scenario (write_run_file); returns build_fields(s)."""
     d = build_fields(s)
     config = default_config(s)
     dt_out = s.interface_stride * d["dt"]
@@ -211,21 +236,10 @@ def write_run(path, s: Scenario) -> dict:
         "contact_iterations": (np.full(d["tg"].size, 12), "1"),
         "contact_residual": (np.full(d["tg"].size, 3e-11), "1"),
     }
-    with h5py.File(path, "w") as file:
-        for key, value in attrs.items():
-            if key not in s.drop_attributes and value is not None:
-                file.attrs[key] = value
-        group = file.create_group("setup")
-        for key, value in setup.items():
-            if key not in s.drop_attributes:
-                group.attrs[key] = value
-        for group, items in (("interface", interface), ("global", series)):
-            for name, (data, unit) in items.items():
-                if f"/{group}/{name}" in s.drop_datasets:
-                    continue
-                ds = file.create_dataset(f"/{group}/{name}", data=data, compression="gzip")
-                ds.attrs["unit"] = unit
-                ds.attrs["description"] = f"synthetic {name}"
+    write_run_file(path, attrs, setup,
+                   {name: (data, unit, f"synthetic {name}") for name, (data, unit) in interface.items()},
+                   {name: (data, unit, f"synthetic {name}") for name, (data, unit) in series.items()},
+                   drop_attributes=s.drop_attributes, drop_datasets=s.drop_datasets, compression="gzip")
     return d
 
 
