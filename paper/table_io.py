@@ -5,22 +5,12 @@ from __future__ import annotations
 
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
 from analysis.core.errors import InputError  # noqa: F401
-from analysis.metrics.regime import category_label
+from analysis.metrics.regime import outcome_label
 from analysis.core.table_csv import read_table as read_rows  # noqa: F401
 
 
-#: How an end reason reads; categories read as analysis.metrics.regime.CATEGORY_LABELS says (e.g. `no_slip`
-#: is "uniform sliding": the interface slides with the top, below the slip threshold).
-END_REASON_LABELS = {
-    "stop_after_opening": "after opening",
-    "t_end": "end time",
-    "contact_not_converged": "contact not converged",
-}
-
-
-def label(value) -> str:
-    """A category, regime or end reason as text (underscores become spaces otherwise)."""
-    return END_REASON_LABELS.get(str(value)) or category_label(str(value))
+#: A category, regime or end reason as text (one definition: analysis.metrics.regime).
+label = outcome_label
 
 
 def latex_number(text: str) -> str:

@@ -66,3 +66,8 @@ def read_table(path: str | Path, required: tuple[str, ...] | list[str] = ()) -> 
         raise InputError(f"{path}: missing required column(s) {', '.join(missing)} "
                          f"(has: {', '.join(columns) or 'none'})")
     return rows
+
+
+def parse_table(text: str) -> list[dict[str, Any]]:
+    """The rows of CSV text as `read_table` returns them (a table exactly as a reader will see it)."""
+    return [{k: parse_cell(v) for k, v in row.items() if k} for row in csv.DictReader(io.StringIO(text))]

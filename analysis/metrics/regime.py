@@ -55,6 +55,19 @@ def category_label(key: str) -> str:
     return CATEGORY_LABELS.get(key, str(key).replace("_", " "))
 
 
+#: How an end reason reads in the tables.
+END_REASON_LABELS = {
+    "stop_after_opening": "after opening",
+    "t_end": "end time",
+    "contact_not_converged": "contact not converged",
+}
+
+
+def outcome_label(value) -> str:
+    """A category, regime or end reason as text: END_REASON_LABELS, else category_label."""
+    return END_REASON_LABELS.get(str(value)) or category_label(str(value))
+
+
 def regime(celerity: float, c_s: float, c_l: float) -> str | None:
     """'subsonic', 'intersonic' or 'supersonic' from |celerity| (m/s); None if nan."""
     if celerity is None or not math.isfinite(celerity):
