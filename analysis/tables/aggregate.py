@@ -32,7 +32,9 @@ import math
 from pathlib import Path
 from typing import Any, Iterable
 
+from analysis.core import table_render
 from analysis.core.errors import InputError
+from analysis.core.table_render import Column
 from analysis.tables.reference import ReferenceCell, metrics_by_cell
 from analysis.core.table_csv import csv_text, format_cell, parse_table
 from analysis.tables import table1_tex
@@ -211,21 +213,25 @@ def table1csv_text(rows: list[dict[str, Any]]) -> str:
     return csv_text(TABLE1_COLUMNS, rows)
 
 
+def _regenerated_category(r: dict[str, Any]) -> str:
+    return ((r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else "")
+            + (f" (published: {r['published_category']})" if r["category_match"] is False else ""))
+
+
+#: The columns of table1.md.
+TABLE1_MD = (
+    Column("nu", lambda r: f"{r['nu']:g}"), Column("f", lambda r: f"{r['f']:.2f}"),
+    Column("published (m/s)", lambda r: f"{r['published']:.3f}"),
+    Column("regenerated (m/s)", lambda r: "missing" if r["celerity"] is None else f"{r['celerity']:.3f}"),
+    Column("deviation", lambda r: "" if r["celerity"] is None else
+           f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)")),
+    Column("regime (pub.)", lambda r: r["published_regime"] or ""), Column("regime", lambda r: r["regime"] or ""),
+    Column("category", _regenerated_category), Column("min T/N", lambda r: format_cell(r["min_T_over_N"], ".3f")),
+)
+
+
 def table1_markdown(rows: list[dict[str, Any]], summary: dict[str, Any]) -> str:
-    header = ["nu", "f", "published (m/s)", "regenerated (m/s)", "deviation", "regime (pub.)",
-              "regime", "category", "min T/N"]
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    for r in rows:
-        c = r["celerity"]
-        lines.append("| " + " | ".join([
-            f"{r['nu']:g}", f"{r['f']:.2f}", f"{r['published']:.3f}",
-            "missing" if c is None else f"{c:.3f}",
-            "" if c is None else f"{100 * r['deviation_rel']:+.1f}%" + ("" if r["sign_match"] else " (sign)"),
-            r["published_regime"] or "", r["regime"] or "",
-            (r["category"] or "") + (f" (run ended: {r['end_reason']})" if r["end_reason"] else "")
-            + (f" (published: {r['published_category']})" if r["category_match"] is False else ""),
-            format_cell(r["min_T_over_N"], ".3f")]) + " |")
-    return "\n".join(lines) + "\n\n" + summary_line(summary) + "\n"
+    return table_render.markdown(TABLE1_MD, rows, summary_line(summary))
 
 
 def all_metricscsv_text(metrics: list[dict[str, Any]]) -> str:
