@@ -67,8 +67,8 @@ def _measure(args: argparse.Namespace) -> int:
 
 
 def _aggregate(args: argparse.Namespace) -> int:
-    from analysis.tables import aggregate as agg
     from analysis.core.atomic import write_files
+    from analysis.tables import aggregate as agg
     from analysis.tables.reference import read_reference
 
     reference = read_reference(args.reference)
@@ -98,8 +98,8 @@ def _compare(args: argparse.Namespace) -> int:
 
 
 def _score_rules(args: argparse.Namespace) -> int:
-    from analysis.tables import aggregate as agg
     from analysis.core.atomic import write_files
+    from analysis.tables import aggregate as agg
     from analysis.tables.reference import read_reference
     from analysis.tables.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
 

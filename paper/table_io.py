@@ -5,8 +5,8 @@ from __future__ import annotations
 
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
 from analysis.core.errors import InputError  # noqa: F401
-from analysis.metrics.regime import outcome_label
 from analysis.core.table_csv import read_table as read_rows  # noqa: F401
+from analysis.metrics.regime import outcome_label
 
 
 #: A category, regime or end reason as text (one definition: analysis.metrics.regime).

@@ -16,10 +16,10 @@ import math
 import sys
 from pathlib import Path
 
-from analysis.tables import aggregate as agg
 from analysis.core.errors import InputError
-from analysis.tables.reference import cell_key, read_reference
 from analysis.core.table_csv import read_table
+from analysis.tables import aggregate as agg
+from analysis.tables.reference import cell_key, read_reference
 
 def as_metrics(row):
     """A committed all_metrics.csv row as the metrics dict it was written from (nan -> None)."""

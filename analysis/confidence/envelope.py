@@ -37,9 +37,9 @@ from typing import Any
 from analysis.confidence.ensemble import SYSTEMATIC_GROUPS
 from analysis.core import table_render
 from analysis.core.errors import InputError
+from analysis.core.table_csv import read_table
 from analysis.core.table_render import Column
 from analysis.tables.reference import cell_key
-from analysis.core.table_csv import read_table
 
 BASE_COLUMNS = ("nu", "f", "group", "published", "celerity_seed1", "celerity_mean", "seed_min",
                 "seed_max", "envelope_min", "envelope_max", "seed1_dev", "mean_dev", "seed_min_dev",

@@ -21,9 +21,9 @@ from typing import Any
 from analysis.confidence.ensemble import DEFAULT_SEED, group_of
 from analysis.core import table_render
 from analysis.core.errors import InputError
+from analysis.core.table_csv import csv_text
 from analysis.core.table_render import Column
 from analysis.tables.reference import ReferenceCell, cell_key
-from analysis.core.table_csv import csv_text
 
 REQUIRED = ("nu", "f", "seed", "celerity", "celerity_reason")
 STATUSES = ("limit", "not monotone", "not converging", "incomplete", "fewer meshes")

@@ -23,9 +23,9 @@ from typing import Any
 
 from analysis.core import table_render
 from analysis.core.errors import InputError
+from analysis.core.table_csv import csv_text
 from analysis.core.table_render import Column
 from analysis.tables.reference import cell_key
-from analysis.core.table_csv import csv_text
 
 REQUIRED = ("nu", "f", "seed", "lambda_over_H", "elements_per_H", "pulse_count", "pulse_count_theory",
             "pulse_next_strength", "later_drops_start_T_over_N_median", "end_reason")

@@ -27,8 +27,8 @@ import numpy as np
 
 from analysis.core import table_render
 from analysis.core.errors import InputError
-from analysis.core.table_render import Column
 from analysis.core.table_csv import csv_text
+from analysis.core.table_render import Column
 
 #: event key -> label; the keys are metrics of analysis.metrics.measure but `slip_velocity_max_time`.
 EVENTS = {

@@ -30,13 +30,13 @@ import math
 import statistics
 from typing import Any
 
-from analysis.theory import elastic, supersonic
+from analysis.confidence.mesh_limit import richardson
 from analysis.core import table_render
 from analysis.core.errors import InputError
-from analysis.core.table_render import Column
-from analysis.confidence.mesh_limit import richardson
-from analysis.tables.reference import cell_key
 from analysis.core.table_csv import csv_text
+from analysis.core.table_render import Column
+from analysis.tables.reference import cell_key
+from analysis.theory import elastic, supersonic
 
 REQUIRED = ("nu", "f", "seed", "dt_times_cs", "elements_per_H", "celerity", "celerity_reason")
 STATUSES = ("within seed spread", "converging", "not converging", "another regime", "too few time steps")

@@ -34,10 +34,10 @@ from typing import Any, Iterable
 
 from analysis.core import table_render
 from analysis.core.errors import InputError
-from analysis.core.table_render import Column
-from analysis.tables.reference import ReferenceCell, metrics_by_cell
 from analysis.core.table_csv import csv_text, format_cell, parse_table
+from analysis.core.table_render import Column
 from analysis.tables import table1_tex
+from analysis.tables.reference import ReferenceCell, metrics_by_cell
 
 TABLE1_COLUMNS = ("nu", "f", "celerity", "published", "deviation_rel", "regime", "published_regime",
                   "sign_match", "regime_match", "within_tol", "category", "opening", "inversion",

@@ -22,10 +22,10 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from analysis.theory import elastic
 from analysis.core.errors import InputError
-from analysis.tables.reference import ReferenceCell, cell_key
 from analysis.metrics.regime import regime
+from analysis.tables.reference import ReferenceCell, cell_key
+from analysis.theory import elastic
 
 
 @dataclass(frozen=True)

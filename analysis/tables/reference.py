@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from analysis.theory import elastic
 from analysis.core.errors import InputError
 from analysis.metrics.regime import regime
+from analysis.theory import elastic
 
 #: The reference file shipped with the project.
 DEFAULT_REFERENCE = Path(__file__).resolve().parents[2] / "study" / "reference" / "table1_celerity.csv"

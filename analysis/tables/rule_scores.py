@@ -15,12 +15,12 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from analysis.fronts.rules import RULES
 from analysis.core import table_render
 from analysis.core.errors import InputError
 from analysis.core.table_render import Column
-from analysis.tables.reference import ReferenceCell, metrics_by_cell
+from analysis.fronts.rules import RULES
 from analysis.metrics.regime import regime
+from analysis.tables.reference import ReferenceCell, metrics_by_cell
 
 #: Columns of the score table (one row per rule).
 SCORE_COLUMNS = ("rule", "default", "cells_published", "cells_measured", "cells_excluded",

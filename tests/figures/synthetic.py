@@ -13,10 +13,10 @@ from pathlib import Path
 
 import numpy as np
 
-from analysis.tables import aggregate
 from analysis.metrics import pulses
-from analysis.theory import elastic, flutter
+from analysis.tables import aggregate
 from analysis.tables.reference import ReferenceCell
+from analysis.theory import elastic, flutter
 from synthetic_run import write_run_file
 
 E, RHO, H = 1000.0, 1000.0, 25.0

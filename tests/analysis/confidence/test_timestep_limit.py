@@ -8,9 +8,9 @@ import math
 import pytest
 
 from analysis import cli
-from analysis.theory import elastic, supersonic
 from analysis.confidence import timestep_limit
 from analysis.tables.reference import ReferenceCell
+from analysis.theory import elastic, supersonic
 
 REFERENCE = [ReferenceCell(0.45, 1.0, -2.523), ReferenceCell(0.49, 0.8, -5.253), ReferenceCell(0.2, 1.5, 0.882)]
 

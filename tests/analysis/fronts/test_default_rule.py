@@ -6,8 +6,8 @@ import math
 
 import pytest
 
-from analysis.fronts import rules
 from analysis.core.io import load_run
+from analysis.fronts import rules
 from analysis.metrics.measure import ANALYSIS_VERSION, measure_run
 from synthetic_run import Pulse, Scenario, wave_speeds
 from test_rules import precursor_then_opening_pulse

@@ -5,12 +5,12 @@ import math
 
 import pytest
 
+from analysis.core.io import load_run
 from analysis.fronts import celerity as cel
 from analysis.fronts import rules
-from analysis.metrics import opening
-from analysis.core.io import load_run
-from analysis.metrics.measure import measure_run
 from analysis.fronts.tracking import find_edges
+from analysis.metrics import opening
+from analysis.metrics.measure import measure_run
 from synthetic_run import OPENING_THRESHOLD_REL, UY_OVER_H, H, Pulse, Scenario, build_fields, paper_case, wave_speeds
 
 OPENING_THRESHOLD = OPENING_THRESHOLD_REL * abs(UY_OVER_H) * H

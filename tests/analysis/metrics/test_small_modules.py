@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from analysis.metrics import energy, inversion, opening, pulses, regime
 from analysis.fronts.tracking import EdgeTrack
+from analysis.metrics import energy, inversion, opening, pulses, regime
 
 
 def test_drops_with_hysteresis():

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from analysis.tables.aggregate import TABLE1_COLUMNS
 from analysis.cli import main
+from analysis.tables.aggregate import TABLE1_COLUMNS
 from synthetic_run import Pulse, Scenario, paper_case
 
 ROOT = Path(__file__).resolve().parents[3]
