@@ -27,8 +27,8 @@ from collections import Counter
 from dataclasses import asdict
 
 from analysis.core.atomic import write_file
-from claim_support import TABLES, VERDICTS, Missing, Tables, Verdict, pct
-from claims import headline, verdicts
+from analysis.tables.claim_support import TABLES, VERDICTS, Missing, Tables, Verdict, pct
+from analysis.tables.claims import headline, verdicts
 from table_io import InputError, labelled_paths, latex_number
 
 # ---------------------------------------------------------------- output

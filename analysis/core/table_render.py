@@ -60,3 +60,14 @@ def latex(columns: Iterable[Column], rows: Iterable[Row], command: str, *,
         out.append(" & ".join(c.tex_cell(r) for c in cols) + r" \\")
     out += [r"\bottomrule", r"\end{tabular}"]
     return "\n".join(out) + "\n"
+
+
+def latex_number(text: str) -> str:
+    """A formatted number as LaTeX math text: '3.8e-14' -> '3.8\\times10^{-14}', '1e-05' -> '10^{-5}'."""
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    power = f"10^{{{int(exponent)}}}"
+    if float(mantissa) == 1:
+        return power
+    return ("-" + power) if float(mantissa) == -1 else f"{mantissa}\\times{power}"

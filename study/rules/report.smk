@@ -144,7 +144,7 @@ rule paper_claims:
     Conclusions drawn from them (paper/make_claims.py)."""
     input:
         script="paper/make_claims.py",
-        rules=["paper/claims.py", "paper/claim_support.py"],  # the claims make_claims.py renders
+        rules=["analysis/tables/claims.py", "analysis/tables/claim_support.py"],  # the verdicts make_claims.py renders
         claims=repo_path("study/reference/claims.json"),
         tables=lambda wc: list(claim_tables().values()),
         meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],

@@ -1,4 +1,4 @@
-"""What the claims of make_claims.py share: the sweep tables each name is (TABLES) and their
+"""What the claims (analysis.tables.claims, rendered by paper/make_claims.py) share: the sweep tables each name is (TABLES) and their
 reader (Tables), the verdicts, and the LaTeX formatting of numbers in a reason."""
 from __future__ import annotations
 
@@ -8,7 +8,9 @@ import re
 import statistics
 from dataclasses import dataclass
 
-from table_io import InputError, latex_number, read_rows
+from analysis.core.errors import InputError
+from analysis.core.table_csv import read_table as read_rows
+from analysis.core.table_render import latex_number
 
 
 #: name -> (sweep table it is, columns it must have).

@@ -1,4 +1,4 @@
-"""The verdict on each of the paper's claims (make_claims.py): one function per claim, its rule in its
+"""The verdict on each of the paper's claims (rendered by paper/make_claims.py): one function per claim, its rule in its
 docstring, the numbers in the reason; `verdicts` runs those of claims.json."""
 from __future__ import annotations
 
@@ -6,9 +6,11 @@ import math
 import statistics
 from collections import Counter
 
-from claim_support import (BACKWARD_OPENING, FORWARD_OPENING, Missing, Tables, Verdict, cell, finite, g, grade,
+from analysis.tables.claim_support import (BACKWARD_OPENING, FORWARD_OPENING, Missing, Tables, Verdict, cell,
+                                          finite, g, grade,
                            mesh_number, pct, same, sci, spread, tt)
-from table_io import InputError, label
+from analysis.core.errors import InputError
+from analysis.metrics.regime import outcome_label
 
 
 # ---------------------------------------------------------------- Table 1, the headline count
@@ -99,7 +101,7 @@ def claim_backward(tables, spec, tolerance, steps):
     held, notes = 0, []
     for r in rows:
         if not finite(r["celerity"]):
-            notes.append(f"{cell(r)} no front ({label(r['category'])})")
+            notes.append(f"{cell(r)} no front ({outcome_label(r['category'])})")
             continue
         flips = flips_at_other_meshes(r, tables.meshes)
         if r["sign_match"] is True and not flips:
@@ -149,7 +151,7 @@ def claim_opening(tables, spec, tolerance, steps):
     published outcome; the grid's opening and inversion counts are quoted."""
     rows = [r for r in tables.need("table1") if finite(r["published"])]
     kept = [r for r in rows if r["category_match"] is True]
-    other = [f"{cell(r)}: {label(r['category'])}" for r in rows if r["category_match"] is not True]
+    other = [f"{cell(r)}: {outcome_label(r['category'])}" for r in rows if r["category_match"] is not True]
     grid = tables.need("grid")
     reason = (f"{len(kept)} of {len(rows)} published cells show the published opening wave"
               + (f" (not: {'; '.join(other)})" if other else "")
@@ -225,7 +227,7 @@ def claim_mesh(tables, spec, tolerance, steps):
     categories = {r["category"] for r in rows}
     reason = ("at the reference point $c_p$ = " + ", ".join(f"{g(r['celerity'])} (H/{r['elements_per_H']:g})" for r in rows)
               + f" m/s, spread {pct(s)} (tolerance {pct(tolerance, 0)}), categories: "
-              + ", ".join(sorted(label(c) for c in categories)))
+              + ", ".join(sorted(outcome_label(c) for c in categories)))
     flips = [cell(r) for r in tables.optional("table1") or [] if finite(r["published"])
              and flips_at_other_meshes(r, tables.meshes)]
     if tables.meshes:
@@ -252,7 +254,7 @@ def claim_timestep(tables, spec, tolerance, steps):
         text = f"({nu:g}, {f:g}): $c_p$ = " + ", ".join(f"{g(r['celerity'])}" for r in runs) + \
             " at $\\Delta t\\,c_s$ = " + ", ".join(f"{r['dt_times_cs']:g}" for r in runs) + f" m (spread {pct(s)})"
         if len(kinds) > 1:
-            text += ", category " + " / ".join(label(r["category"]) for r in runs)
+            text += ", category " + " / ".join(outcome_label(r["category"]) for r in runs)
         parts.append(text)
     reason = "; ".join(parts)
     small = tables.optional("timestep_backward")
