@@ -6,11 +6,10 @@ import math
 import statistics
 from collections import Counter
 
-from analysis.tables.claim_support import (BACKWARD_OPENING, FORWARD_OPENING, Missing, Tables, Verdict, cell,
-                                          finite, g, grade,
-                           mesh_number, pct, same, sci, spread, tt)
 from analysis.core.errors import InputError
 from analysis.metrics.regime import outcome_label
+from analysis.tables.claim_support import (BACKWARD_OPENING, FORWARD_OPENING, Missing, Tables, Verdict, cell,
+                                          finite, g, grade, mesh_number, pct, same, sci, spread, tt)
 
 
 # ---------------------------------------------------------------- Table 1, the headline count
