@@ -38,6 +38,8 @@ SOLVER = os.environ.get("SLIDEWAVE_BIN", "build/slidewave")
 include: "study/rules/common.smk"
 include: "study/rules/simulate.smk"
 include: "study/rules/tables.smk"
+include: "study/rules/ensemble.smk"
+include: "study/rules/limits.smk"
 include: "study/rules/figures.smk"
 include: "study/rules/report.smk"
 include: "study/rules/movies.smk"

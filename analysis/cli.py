@@ -1,4 +1,6 @@
-"""Command line: `/usr/bin/python3 -m analysis {measure,aggregate,compare,score-rules,flutter-boundary,bimaterial} ...`.
+"""Command line: `/usr/bin/python3 -m analysis COMMAND ...`, the one entry of every analysis command:
+measure, aggregate, compare, score-rules, flutter-boundary, bimaterial, and the confidence studies
+ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds (analysis/confidence/commands.py).
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
 none; 2 bad input (the message on stderr names the file and the problem; no output file is
@@ -14,7 +16,7 @@ import os
 import sys
 from pathlib import Path
 
-from analysis.errors import InputError
+from analysis.core.errors import InputError
 
 EXIT_FAILED_CHECK = 1
 EXIT_BAD_INPUT = 2
@@ -33,9 +35,9 @@ def _refuse_input_as_output(output: Path, inputs: list[Path]) -> None:
 
 
 def _measure(args: argparse.Namespace) -> int:
-    from analysis.atomic import write_file
-    from analysis.io import load_run
-    from analysis.measure import Settings, measure_run
+    from analysis.core.atomic import write_file
+    from analysis.core.io import load_run
+    from analysis.metrics.measure import Settings, measure_run
 
     _refuse_input_as_output(args.output, [args.run])
     settings = Settings(threshold_rel=args.threshold, window_length=args.window,
@@ -65,24 +67,23 @@ def _measure(args: argparse.Namespace) -> int:
 
 
 def _aggregate(args: argparse.Namespace) -> int:
-    from analysis import aggregate as agg
-    from analysis.atomic import write_files
-    from analysis.reference import read_reference
+    from analysis.core.atomic import write_files
+    from analysis.tables import aggregate as agg
+    from analysis.tables.reference import read_reference
 
     reference = read_reference(args.reference)
     _refuse_input_as_output(args.output, list(args.metrics) + [args.reference])
     metrics = [agg.load_metrics(path) for path in args.metrics]
     table_metrics = agg.select(metrics, agg.parse_selection(args.select))
-    flutter = agg.read_flutter(args.flutter) if args.flutter else None
-    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance, flutter)
+    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance)
     write_files({args.output / name: text for name, text in files.items()})
     print(agg.summary_line(summary) + f" -> {args.output}")
     return 0
 
 
 def _compare(args: argparse.Namespace) -> int:
-    from analysis.compare import compare, read_table
-    from analysis.reference import read_reference
+    from analysis.tables.compare import compare, read_table
+    from analysis.tables.reference import read_reference
 
     reference = read_reference(args.reference)
     result = compare(read_table(args.table), reference, args.tolerance,
@@ -97,10 +98,10 @@ def _compare(args: argparse.Namespace) -> int:
 
 
 def _score_rules(args: argparse.Namespace) -> int:
-    from analysis import aggregate as agg
-    from analysis.atomic import write_files
-    from analysis.reference import read_reference
-    from analysis.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
+    from analysis.core.atomic import write_files
+    from analysis.tables import aggregate as agg
+    from analysis.tables.reference import read_reference
+    from analysis.tables.rule_scores import SCORE_FILES, rule_scores, score_files, scores_csv, scores_text
 
     reference = read_reference(args.reference)
     outputs = {}
@@ -126,9 +127,9 @@ def _score_rules(args: argparse.Namespace) -> int:
 
 def _flutter_boundary(args: argparse.Namespace) -> int:
     try:
-        from analysis.flutter import flutter_boundary
+        from analysis.theory.flutter import flutter_boundary
     except ImportError as err:
-        raise InputError(f"the flutter-boundary theory (analysis/flutter.py) is not available: {err}") from None
+        raise InputError(f"the flutter-boundary theory (analysis/theory/flutter.py) is not available: {err}") from None
     for nu in args.nu:
         if not 0.0 <= nu < 0.5:
             raise InputError(f"--nu {nu} outside [0, 0.5)")
@@ -139,8 +140,8 @@ def _flutter_boundary(args: argparse.Namespace) -> int:
 
 
 def _bimaterial(args: argparse.Namespace) -> int:
-    from analysis.bimaterial_stability import bimaterial_regime, instability_threshold
-    from analysis.interface_wave import ElasticSolid
+    from analysis.theory.bimaterial_stability import bimaterial_regime, instability_threshold
+    from analysis.theory.interface_wave import ElasticSolid
 
     nu_substrate = args.nu if args.nu_substrate is None else args.nu_substrate
     values = [("--E", args.E), ("--rho", args.rho), ("--rho-ratio", args.rho_ratio)]
@@ -181,14 +182,14 @@ def _bimaterial(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from analysis.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
+    from analysis.fronts.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
 
     parser = argparse.ArgumentParser(prog="python3 -m analysis",
                                      description="Measure slidewave runs and compare with the paper.")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     p = commands.add_parser("measure", help="one run.h5 -> metrics.json")
-    p.add_argument("run", type=Path, help="run file (format_version 2)")
+    p.add_argument("run", type=Path, help="run file (the format versions analysis/core/io.py reads)")
     p.add_argument("-o", "--output", type=Path, required=True, help="metrics JSON to write")
     p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD_REL,
                    help="slip-velocity threshold relative to V0 (default %(default)g)")
@@ -207,8 +208,6 @@ def build_parser() -> argparse.ArgumentParser:
     _reference_options(p)
     p.add_argument("--select", action="append", default=[], metavar="KEY=VALUE",
                    help="only metrics with this value enter Table 1 (repeatable), e.g. elements_per_H=32")
-    p.add_argument("--flutter", type=Path, help="flutter boundary (flutter-boundary output): adds the "
-                   "column inside_flutter_wedge to all_metrics.csv")
     p.set_defaults(handler=_aggregate)
 
     p = commands.add_parser("compare", help="check a table1.csv against the published celerities")
@@ -242,7 +241,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = commands.add_parser("bimaterial",
                             help="generalized Rayleigh speed and the most unstable mode of steady sliding "
-                                 "of the layer on a deformable substrate (analysis/bimaterial_stability.py)")
+                                 "of the layer on a deformable substrate (analysis/theory/bimaterial_stability.py)")
     p.add_argument("--E-ratio", type=float, nargs="+", required=True,
                    help="E_substrate / E_layer (one block of output per value)")
     p.add_argument("--nu", type=float, required=True, help="Poisson's ratio of the layer")
@@ -255,14 +254,17 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
                         "of any family, forward and backward (docs/bimaterial-theory.md)")
     p.set_defaults(handler=_bimaterial)
+
+    from analysis.confidence.commands import add_commands
+    add_commands(commands, _reference_options)
     return parser
 
 
 
 def _reference_options(p: argparse.ArgumentParser) -> None:
     """--reference and --tolerance, the same for every command that scores against Table 1."""
-    from analysis.aggregate import DEFAULT_TOLERANCE
-    from analysis.reference import DEFAULT_REFERENCE
+    from analysis.tables.aggregate import DEFAULT_TOLERANCE
+    from analysis.tables.reference import DEFAULT_REFERENCE
 
     p.add_argument("--reference", type=Path, default=DEFAULT_REFERENCE,
                    help="published celerities (default %(default)s)")

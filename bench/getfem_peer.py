@@ -51,18 +51,15 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import h5py  # noqa: E402
 import numpy as np  # noqa: E402
-import scipy.sparse as sp  # noqa: E402
-import scipy.sparse.linalg as spla  # noqa: E402
 
 try:
-    import getfem as gf  # noqa: E402
+    import getfem as gf  # noqa: E402,F401  (its absence is the error below)
 except ImportError:  # pragma: no cover
     sys.exit("getfem not importable: apt-get install -y --no-install-recommends python3-getfem, "
              "and run with /usr/bin/python3")
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, REPO)
-from analysis import theory  # noqa: E402
+from analysis.theory import elastic  # noqa: E402  (run with PYTHONPATH=., bench/GETFEM.md)
 from getfem_layer import OPEN, SLIP, GetfemLayer  # noqa: E402  (bench/, beside this file)
 
 
@@ -78,12 +75,12 @@ class Problem:
         self.h = self.H / n
         self.lam = self.lambda_over_H * self.H
         self.n_x = int(round(self.lambda_over_H * n))
-        self.G = theory.shear_modulus(self.E, self.nu)
+        self.G = elastic.shear_modulus(self.E, self.nu)
         self.lame = self.E * self.nu / ((1 + self.nu) * (1 - 2 * self.nu))
-        self.c_s = theory.shear_wave_speed(self.E, self.nu, self.rho)
-        self.dt = theory.time_step(self.c_s, dt_times_cs=0.5)
+        self.c_s = elastic.shear_wave_speed(self.E, self.nu, self.rho)
+        self.dt = elastic.time_step(self.c_s, dt_times_cs=0.5)
         self.uy_top = -0.001 * self.H
-        self.p0 = theory.preload_pressure(self.uy_top, self.E, self.nu, self.H)
+        self.p0 = elastic.preload_pressure(self.uy_top, self.E, self.nu, self.H)
         self.preshear_ratio = args.preshear
         # All-stick interface: simple shear, T/N = G (u_x / H) / p0 (exact for the Q4 mesh too).
         self.ux_pre = self.preshear_ratio * self.f * self.p0 * self.H / self.G

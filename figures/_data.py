@@ -1,25 +1,20 @@
-"""Readers for the figure scripts: run.h5 (through analysis.io), metrics JSON, CSV tables,
+"""Readers for the figure scripts: run.h5 (through analysis.core.io), metrics JSON, CSV tables,
 flutter.txt.
 
 Figures compute nothing: this module only opens files, checks what the figures need, and hands
-arrays and rows to the plotting code. A run file is read by `analysis.io.load_run`, the project's
+arrays and rows to the plotting code. A run file is read by `analysis.core.io.load_run`, the project's
 one reader, which checks `format_version` first; the bulk snapshots, which it does not read, are
 read here after that check. Every problem with an input is the analysis package's `InputError`
 (one error class for the whole Python side), whose message names the file and what is wrong.
 """
 import json
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-from analysis.errors import InputError  # noqa: E402
-from analysis.io import load_run  # noqa: E402
-from analysis.table_csv import parse_cell, read_table  # noqa: E402
+from analysis.core.errors import InputError
+from analysis.core.io import load_run
+from analysis.core.table_csv import parse_cell, read_table
 
 __all__ = ["InputError", "Run", "open_run", "read_csv", "read_flutter",
            "read_json", "select"]
@@ -100,7 +95,7 @@ def read_json(path):
 
 
 def read_csv(path, required):
-    """Rows of a table of `analysis aggregate` as dicts of parsed values (analysis.table_csv); an
+    """Rows of a table of `analysis aggregate` as dicts of parsed values (analysis.core.table_csv); an
     InputError names any missing required column or a table without rows."""
     rows = read_table(path, required)
     if not rows:

@@ -4,7 +4,7 @@
     /usr/bin/python3 figures/backward_celerity.py --out results/figures
 
 Writes OUT/backward_celerity.{png,pdf} (one panel per nu) and OUT/backward_celerity.{csv,md}: per
-(nu, f), the theory celerity -c(f) (`analysis.supersonic.supersonic_trace_speed`, c_s of the paper's
+(nu, f), the theory celerity -c(f) (`analysis.theory.supersonic.supersonic_trace_speed`, c_s of the paper's
 E and rho), the published value (study/reference/table1_celerity.csv) and the celerity of every
 committed series in study/results (mesh, time step, seed), signed as measured. The plot shows only
 backward (negative) measured celerities; a positive value in the table is a pulse of another regime.
@@ -27,10 +27,9 @@ import numpy as np
 import _style
 from _data import InputError, read_csv
 
+from analysis.theory import elastic, supersonic
+
 ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-from analysis import supersonic, theory  # noqa: E402
 
 # (column, label, folder under --results, required row values, plot style)
 SERIES = [
@@ -133,8 +132,8 @@ def published(reference, nu):
 
 
 def theory_celerity(nu, f):
-    """-c (m/s): the backward steady wave at the paper's E, rho (c_s from analysis.theory)."""
-    c_s = theory.wave_speeds(nu)[0]
+    """-c (m/s): the backward steady wave at the paper's E, rho (c_s from analysis.theory.elastic)."""
+    c_s = elastic.wave_speeds(nu)[0]
     return -supersonic.supersonic_trace_speed(nu, f, c_s)
 
 
@@ -180,7 +179,7 @@ def write_tables(rows, out):
 def plot(data, out):
     fig, axes = _style.plt.subplots(1, len(data), figsize=(7.0, 3.2))
     for ax, (nu, (paper, ours)) in zip(axes, data.items()):
-        c_s, _, c_l = theory.wave_speeds(nu)
+        c_s, _, c_l = elastic.wave_speeds(nu)
         ax.plot(F_CURVE, [theory_celerity(nu, f) for f in F_CURVE], color="k", lw=1.2,
                 label="steady wave (Adams 2000)")
         ax.axhline(-c_l, **dict(_style.THEORY_STYLE["c_l"], label="$-c_l$"))

@@ -10,7 +10,7 @@ colour (the qualitative tab palette of the other figures) and marker shape, name
 (a sequential colour map made the 14 f values of Table 1 near-identical shades). Filled marker:
 regenerated; open marker: published; a thin line joins the two values of one cell. The upper panel shows the
 fronts running in the sliding direction, the lower one those running against it (mirrored wave
-speeds -c_s, -sqrt2 c_s, -c_l). The wave-speed curves are analysis.theory's, for the paper's E and
+speeds -c_s, -sqrt2 c_s, -c_l). The wave-speed curves are analysis.theory.elastic's, for the paper's E and
 rho (1000 Pa, 1000 kg/m^3; --E, --rho).
 """
 import argparse
@@ -21,7 +21,7 @@ from matplotlib.lines import Line2D
 
 import _style
 from _data import InputError, read_csv, select
-from analysis import theory
+from analysis.theory import elastic
 
 REQUIRED = ("nu", "f", "celerity", "published")
 # The qualitative palette of the other figures (convergence.py, pulse_spacing.py), then the rest of
@@ -39,8 +39,8 @@ def styles_of(fs):
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("table", help="table1.csv with nu, f, celerity, published")
-    parser.add_argument("--E", type=float, default=theory.TABLE1_E, help="Young's modulus of the theory curves (Pa)")
-    parser.add_argument("--rho", type=float, default=theory.TABLE1_RHO, help="density of the theory curves (kg/m^3)")
+    parser.add_argument("--E", type=float, default=elastic.TABLE1_E, help="Young's modulus of the theory curves (Pa)")
+    parser.add_argument("--rho", type=float, default=elastic.TABLE1_RHO, help="density of the theory curves (kg/m^3)")
     parser.add_argument("--where", nargs="*", default=[], metavar="COLUMN=VALUE",
                         help="keep only the rows with these values")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
@@ -71,7 +71,7 @@ def main(argv=None):
     fig, (up, down) = _style.plt.subplots(2, 1, figsize=(5.4, 5.4), sharex=True,
                                           gridspec_kw=dict(height_ratios=[3, 2], hspace=0.08))
     nu = np.linspace(0.0, max(0.495, max(r["nu"] for r in rows)), 300)
-    c_s, sqrt2_c_s, c_l = np.array([theory.wave_speeds(x, args.E, args.rho) for x in nu]).T
+    c_s, sqrt2_c_s, c_l = np.array([elastic.wave_speeds(x, args.E, args.rho) for x in nu]).T
     for key, values in {"c_l": c_l, "c_s": c_s, "sqrt2_c_s": sqrt2_c_s}.items():
         style = dict(_style.THEORY_STYLE[key])
         up.plot(nu, values, lw=1.2, **style)

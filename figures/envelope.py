@@ -4,7 +4,7 @@ bar and the method envelope (paper/how_sure.tex).
 
     figures/envelope.py envelope.csv --tolerance 0.05 --out envelope
 
-Reads `python3 -m analysis.envelope`'s envelope.csv (deviations already relative to |published|).
+Reads `python3 -m analysis envelope`'s envelope.csv (deviations already relative to |published|).
 Per cell, left to right in the table's order (grouped by systematic group): a light bar over the
 method envelope, a dark bar over the seeds, a dot at the ensemble mean, a cross at seed 1, the
 colour giving the status (within the tolerance, published value inside the envelope, outside);
@@ -28,7 +28,7 @@ LIMIT = 25.0  # % shown; beyond it, clipped and labelled
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("table", help="envelope.csv (python3 -m analysis.envelope)")
+    parser.add_argument("table", help="envelope.csv (python3 -m analysis envelope)")
     parser.add_argument("--tolerance", type=float, required=True, help="relative tolerance, e.g. 0.05")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
     return parser.parse_args(argv)

@@ -4,7 +4,7 @@ cell's systematic group (paper/how_sure.tex, the mesh limit).
 
     figures/mesh_limit.py mesh_limit.csv --tolerance 0.05 --out mesh_limit
 
-Reads `python3 -m analysis.mesh_limit`'s mesh_limit.csv (c_<N> and dev_<N> columns, deviations
+Reads `python3 -m analysis mesh-limit`'s mesh_limit.csv (c_<N> and dev_<N> columns, deviations
 relative to |published|). The Richardson limit of a cell (status `limit`) is drawn at 1/N = 0 with
 an open marker joined by a dotted line; the shaded band is +- tolerance. Deviations beyond the
 plotted range are clipped at its edge.
@@ -27,7 +27,7 @@ LIMIT = 25.0  # % shown
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("table", help="mesh_limit.csv (python3 -m analysis.mesh_limit)")
+    parser.add_argument("table", help="mesh_limit.csv (python3 -m analysis mesh-limit)")
     parser.add_argument("--tolerance", type=float, required=True, help="relative tolerance, e.g. 0.05")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
     return parser.parse_args(argv)

@@ -12,7 +12,7 @@ against the sliding direction; any other category gets its own marker, named in 
 dash-dotted lines bound the flutter wedge read from `flutter.txt` (lines `nu f_lower f_upper`, as
 printed by `python3 -m analysis flutter-boundary`; `inf` = unbounded, `nan` = no instability).
 Each (nu, f) must appear once: restrict a mixed table with --where column=value. With --ensemble
-the input is `python3 -m analysis.ensemble`'s ensemble.csv: the marker is the cell's majority
+the input is `python3 -m analysis ensemble`'s ensemble.csv: the marker is the cell's majority
 category over its seeds, and a cell whose seeds disagree is ringed in orange with its category
 agreement (fraction of the seeds in the majority category) written beside it.
 With --published table1.csv (`python3 -m analysis aggregate`) the paper's classification is laid

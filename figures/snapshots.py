@@ -27,7 +27,7 @@ from _data import InputError, open_run
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run", help="run.h5 (format_version 1) with /snapshots")
+    parser.add_argument("run", help="run.h5 with /snapshots (a format analysis.core.io reads)")
     parser.add_argument("--scale", type=float, default=150.0,
                         help="magnification of the displacement since the first snapshot")
     parser.add_argument("--columns", type=int, default=3, help="blocks per row")

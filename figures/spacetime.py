@@ -34,7 +34,7 @@ MAX_ROWS = 4000  # more output rows than this are drawn every k-th row
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run", help="run.h5 (format_version 1)")
+    parser.add_argument("run", help="run.h5 (a format analysis.core.io reads, docs/contracts.md section 2)")
     parser.add_argument("--field", required=True, choices=sorted(FIELDS))
     parser.add_argument("--metrics", help="metrics.json of the run (draws c_p from 'celerity')")
     parser.add_argument("--tmin", type=float, help="first time shown (s)")

@@ -4,7 +4,7 @@ Adams' steady slip wave and the published value (paper/how_sure.tex).
 
     figures/timestep_backward.py timestep_limit.csv --out timestep_backward
 
-Reads `python3 -m analysis.timestep_limit`'s timestep_limit.csv (one row per cell and dt c_s).
+Reads `python3 -m analysis timestep-limit`'s timestep_limit.csv (one row per cell and dt c_s).
 """
 import argparse
 import math
@@ -19,7 +19,7 @@ REQUIRED = ("nu", "f", "dt_times_cs", "n_runs", "n_backward", "mean", "min", "ma
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("table", help="timestep_limit.csv (python3 -m analysis.timestep_limit)")
+    parser.add_argument("table", help="timestep_limit.csv (python3 -m analysis timestep-limit)")
     parser.add_argument("--out", required=True, help="output prefix: writes PREFIX.png, PREFIX.pdf")
     return parser.parse_args(argv)
 

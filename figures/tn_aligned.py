@@ -5,7 +5,7 @@ paper's Fig. 2c aligns its shear rates so: the drop does not depend on V0).
     figures/tn_aligned.py v1e-6.h5 v1e-5.h5 --metrics v1e-6.json v1e-5.json --labels 1e-6 1e-5 --out fig2e
 
 Reads /global/t and /global/T_over_N of each run and, from its metrics.json, first_drop_start_time
-(s; the peak the first drop falls from, `analysis.inversion`) and n_complete_drops. Time runs from
+(s; the peak the first drop falls from, `analysis.metrics.inversion`) and n_complete_drops. Time runs from
 that start, in units of the shear transit time t_s = H / c_s (run attributes). A run whose first
 drop was cut by the end of the run (n_complete_drops = 0) ends in a cross: its last value is not the
 bottom of the drop. The highlighted run (index, default 0) is red, the others gray.

@@ -49,7 +49,7 @@ def _legend_bottom(fig, ax, legend):
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("runs", nargs="+", help="run.h5 files (format_version 1)")
+    parser.add_argument("runs", nargs="+", help="run.h5 files (a format analysis.core.io reads)")
     parser.add_argument("--labels", nargs="+", help="one legend label per run")
     parser.add_argument("--highlight", type=int, default=0, help="index of the run drawn in red")
     parser.add_argument("--tmin", type=float, help="first time shown (s)")

@@ -1,27 +1,27 @@
 #!/usr/bin/python3
 """generated/how_sure_numbers.tex: the numbers of paper/how_sure.tex, from the ensemble summary
-(`python3 -m analysis.ensemble`) and the envelope summary (`python3 -m analysis.envelope`).
+(`python3 -m analysis ensemble`) and the envelope summary (`python3 -m analysis envelope`).
 
     paper/make_how_sure.py --ensemble ensemble_summary.json --envelope envelope_summary.json -o OUT.tex
         [--finer-ensemble ensemble_summary.json --finer-mesh 128]
 
 The optional finer ensemble (the same cells at a finer mesh, config paper.envelope.finer_ensemble)
-gives the same macros with the stem `ensFiner` instead of `ens`, and \ensFinerMesh.
+gives the same macros with the stem `ensFiner` instead of `ens`, and \\ensFinerMesh.
 Every macro is a number of those files, formatted; a missing key or an unknown group is an error
 that names the file. Deviations are printed in per cent with their sign.
 """
 import argparse
 import sys
 
-from table_io import write_atomically
-from numbers_tex import render  # noqa: E402
-from summary_json import get, read  # noqa: E402
-from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.atomic import write_file
+from numbers_tex import render
+from summary_json import get, read
+from analysis.core.errors import InputError
 
-#: analysis.ensemble's systematic groups -> the macro stem of each.
+#: analysis.confidence.ensemble's systematic groups -> the macro stem of each.
 GROUP_STEMS = {"supersonic backward": "Supersonic", "nu 0-0.1, f 1.1-1.2": "LowNu",
                "nu 0.1-0.2, f >= 1.5": "HighF", "the rest": "Rest"}
-#: analysis.envelope's factors -> macro stem.
+#: analysis.confidence.envelope's factors -> macro stem.
 FACTOR_STEMS = {"seed": "Seed", "mesh": "Mesh", "time step": "TimeStep", "integration": "Integration",
                 "contact weighting": "Contact"}
 
@@ -120,7 +120,7 @@ def main(argv=None):
     except InputError as err:
         print(f"error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(macros, sources, script="paper/make_how_sure.py"))
+    write_file(args.output, render(macros, sources, script="paper/make_how_sure.py"))
     print(f"{len(macros)} macros -> {args.output}")
     return 0
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """generated/how_sure_limits.tex: the numbers and sentences of the limits subsections of
 paper/how_sure.tex (mesh limit, backward pulses against dt, Fig. 3 timeline, pulse counts), from the
-summaries of analysis.mesh_limit, analysis.timestep_limit, analysis.timeline and analysis.pulse_seeds.
+summaries of analysis.confidence.mesh_limit, analysis.confidence.timestep_limit, analysis.confidence.timeline and analysis.confidence.pulse_seeds.
 
     paper/make_how_sure_limits.py --mesh mesh_limit_summary.json --timestep timestep_limit_summary.json
         --timeline timeline_summary.json --pulses pulse_seeds_summary.json -o OUT.tex
@@ -12,12 +12,12 @@ analysis modules from their counts. A missing key is an error that names the fil
 import argparse
 import sys
 
-from table_io import write_atomically
-from numbers_tex import render  # noqa: E402
-from summary_json import get, read  # noqa: E402
-from analysis.errors import InputError  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.atomic import write_file
+from numbers_tex import render
+from summary_json import get, read
+from analysis.core.errors import InputError
 
-#: analysis.timeline's events -> macro stem.
+#: analysis.confidence.timeline's events -> macro stem.
 EVENT_STEMS = {"onset_time": "Onset", "localization_time": "Localization", "celerity_window_start": "Window",
                "first_opening_time": "Opening", "slip_velocity_max_time": "SlipMax",
                "first_drop_start_time": "Drop", "min_T_over_N_time": "MinTN"}
@@ -123,7 +123,7 @@ def main(argv=None):
         print(f"error: {err}", file=sys.stderr)
         return 2
     sources = [args.mesh, args.timestep, args.timeline, args.pulses]
-    write_atomically(args.output, render(macros, sources, script="paper/make_how_sure_limits.py"))
+    write_file(args.output, render(macros, sources, script="paper/make_how_sure_limits.py"))
     print(f"{len(macros)} macros -> {args.output}")
     return 0
 

@@ -25,15 +25,14 @@ Only selection and formatting happen here; every value comes from the inputs.
 import argparse
 import json
 import math
-import os
 import statistics
 import sys
 from collections import Counter
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from numbers_tex import MACRO_NAMES, render  # noqa: E402
-from table_io import InputError, read_rows, write_atomically  # noqa: E402
-from table_io import label as table_label  # noqa: E402
+from numbers_tex import MACRO_NAMES, render
+from analysis.core.atomic import write_file
+from table_io import InputError, read_rows
+from table_io import label as table_label
 
 SUMMARY_KEYS = {  # macro: (summary.json key, kind); a fraction is printed in percent
     "cellsTotal": ("cells_total", "count"),
@@ -327,7 +326,7 @@ def main(argv=None):
         print(f"make_numbers.py: error: {err}", file=sys.stderr)
         return 2
     sources = [args.summary, args.runs, args.grid, args.table1] + [s[2] for s in args.sweep]
-    write_atomically(args.output, render(macros, sources))
+    write_file(args.output, render(macros, sources))
     return 0
 
 

@@ -14,8 +14,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from numbers_tex import ENERGY_MACRO_NAMES, MACRO_NAMES, render  # noqa: E402
+from numbers_tex import ENERGY_MACRO_NAMES, MACRO_NAMES, render
 
 TABLE = """% Placeholder written by paper/make_placeholders.py: run make_table1.py on table1.csv.
 \\begin{tabular}{rrrrr}

@@ -11,7 +11,7 @@ Rows are the published cells that the *last* input ran (the subset run at the fi
 reproduced value (within the tolerance with the published sign, regime and category) is set in bold,
 a wrong sign gets a dagger, a wrong regime a double dagger, another category (e.g. no opening) a
 section sign. The closing rows give, over these cells, the subset's score at each resolution
-(`analysis.aggregate.summarize`: values reproduced, right signs and regimes, median
+(`analysis.tables.aggregate.summarize`: values reproduced, right signs and regimes, median
 |deviation|), so that refinement can be judged on the same cells. The tolerance is the tables' own
 (all inputs must agree).
 """
@@ -20,13 +20,11 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
-import statistics
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis.aggregate import summarize  # noqa: E402  (table_io puts the repository on the path)
+from analysis.core.atomic import write_file
+from table_io import InputError, labelled_paths, read_rows
+from analysis.tables.aggregate import summarize
 
 REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match", "regime_match",
             "category_match", "reproduced")
@@ -98,7 +96,7 @@ def main(argv: list[str] | None = None) -> int:
     except (InputError, ValueError) as error:
         print(f"make_resolution_table.py: error: {error}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(sets, args.tolerance))
+    write_file(args.output, render(sets, args.tolerance))
     return 0
 
 

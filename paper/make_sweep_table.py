@@ -22,11 +22,10 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, label, labelled_paths, latex_number, read_rows, write_atomically  # noqa: E402
+from analysis.core.atomic import write_file
+from table_io import InputError, label, labelled_paths, latex_number, read_rows
 
 #: column -> (heading, kind, format): kind 'param' sorts rows; format is a str.format spec or
 #: 'text' / 'yesno' / 'label' (underscores become spaces).
@@ -153,7 +152,7 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as error:
         print(f"make_sweep_table.py: error: {error.filename}: cannot read ({error.strerror})", file=sys.stderr)
         return 2
-    write_atomically(args.output, table(sets, args.columns))
+    write_file(args.output, table(sets, args.columns))
     return 0
 
 

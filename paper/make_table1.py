@@ -1,158 +1,18 @@
 #!/usr/bin/python3
-"""Write generated/table1.tex: published against regenerated slip-front celerity, one row per
-published cell of the paper's Table 1 (a bare booktabs `tabular`, no float).
+"""Write generated/table1.tex: Table 1 as analysis.tables.table1_tex renders it, with the sign flips at
+the other meshes marked.
 
     paper/make_table1.py table1.csv [--other-mesh H/32=table1_h32.csv ...] -o paper/generated/table1.tex
 
-table1.csv is `python3 -m analysis aggregate`'s: nu, f, celerity (regenerated, m/s, empty when
-absent), published, deviation_rel, within_tol, sign_match, regime_match, category_match, reproduced,
-celerity_quality, celerity_window_sensitivity, end_reason; `regime` and `category` are shown. Only
-selection and formatting happen here: the regenerated c_p is printed with its uncertainty, the
-change of c_p when the measurement window changes (|celerity_window_sensitivity| |c_p|), and (u)
-when the fronts were unsteady (celerity_quality); the deviation (in %) is set in bold when the cell
-is reproduced (within the tolerance with the published sign, regime and category), a wrong sign is
-marked with a dagger, a wrong regime with a double dagger, another category than the published
-opening wave (e.g. no opening) with a section sign, a run that did not complete with an asterisk
-(its end_reason under the table).
+table1.csv is `python3 -m analysis aggregate`'s (columns: analysis.tables.table1_tex.REQUIRED). Only
+selection and formatting happen here.
 """
 import argparse
-import math
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import InputError, label, labelled_paths, read_rows, write_atomically  # noqa: E402
-from analysis import celerity_default  # noqa: E402  (table_io puts the repository on the path)
-
-REQUIRED = ("nu", "f", "celerity", "published", "deviation_rel", "within_tol", "sign_match",
-            "regime_match", "category_match", "reproduced", "celerity_quality",
-            "celerity_window_sensitivity", "regime", "category", "end_reason")
-
-#: celerity_quality flags (analysis/celerity_default.py, whose thresholds are quoted) -> the mark
-#: shown and what it means.
-QUALITY_MARKS = {
-    "unsteady": ("u", f"the front speed drifts by more than {100 * celerity_default.QUALITY_DRIFT:g}\\,\\% "
-                      "over the window"),
-    "estimates_disagree": ("e", "the threshold fit and the cross-correlation estimate of $c_p$ differ by more "
-                                f"than {100 * celerity_default.QUALITY_AGREEMENT:g}\\,\\%"),
-    "aliasing_risk": ("a", "aliasing risk: the front moves by more than "
-                           f"{celerity_default.ALIASING_FRACTION:g} pulse spacings between output frames"),
-    "counter_fronts": ("c", "fronts also run the other way"),
-    "short_window": ("w", "the fit spans less than half of the window"),
-}
-#: Flags that say the measurement is fine (no mark).
-QUALITY_OK = ("", "ok")
-
-
-def finite(value):
-    return isinstance(value, float) and math.isfinite(value)
-
-
-def cell(value, fmt):
-    return f"${value:{fmt}}$" if finite(value) else "--"
-
-
-def quality_flags(value) -> list[str]:
-    """The flags of a celerity_quality cell ('estimates_disagree;unsteady' -> both), 'ok' dropped."""
-    if not isinstance(value, str):
-        return []
-    return [flag.strip() for flag in value.split(";") if flag.strip() not in QUALITY_OK]
-
-
-def flag_mark(flag: str) -> str:
-    """The mark of one flag: its letter, or an unknown flag by its (escaped) name."""
-    return QUALITY_MARKS[flag][0] if flag in QUALITY_MARKS else flag.replace("_", "\\_")
-
-
-def regenerated(r):
-    """c_p with its window uncertainty, every quality flag, * when the run did not complete."""
-    if not finite(r["celerity"]):
-        text = "--"
-    else:
-        text = f"${r['celerity']:.3f}"
-        if finite(r["celerity_window_sensitivity"]):
-            text += f" \\pm {abs(r['celerity_window_sensitivity'] * r['celerity']):.3f}"
-        text += "$"
-        flags = quality_flags(r["celerity_quality"])
-        if flags:
-            text += "\\textsuperscript{(" + ",".join(flag_mark(f) for f in flags) + ")}"
-    return text + ("$^{*}$" if isinstance(r["end_reason"], str) else "")
-
-
-def cell_key(r):
-    return (round(r["nu"], 6), round(r["f"], 6))
-
-
-def sign_flips(r, other_meshes) -> list[str]:
-    """Labels of the other meshes at which this cell's measured celerity has the other sign."""
-    if not finite(r["celerity"]):
-        return []
-    flips = []
-    for mesh, by_cell in other_meshes:
-        other = by_cell.get(cell_key(r))
-        if other is not None and finite(other) and other != 0 and (other > 0) != (r["celerity"] > 0):
-            flips.append(mesh)
-    return flips
-
-
-def render(rows, other_meshes=()):
-    """The table: rows of table1.csv; other_meshes [(label, {(nu, f): celerity})] for sign flips."""
-    optional = ["regime", "category"]
-    lines = ["% Generated by paper/make_table1.py; do not edit.",
-             "\\begin{tabular}{rrrrr" + "l" * len(optional) + "}", "\\toprule",
-             " & ".join(["", "", "\\multicolumn{2}{c}{$c_p$ (m/s)}", "deviation"]
-                        + [""] * len(optional)) + " \\\\",
-             "\\cmidrule(lr){3-4}",
-             " & ".join(["$\\nu$", "$f$", "published", "regenerated", "(\\%)"]
-                        + [c.replace("_", " ") for c in optional]) + " \\\\", "\\midrule"]
-    published = sorted((r for r in rows if finite(r["published"])),
-                       key=lambda r: (r["nu"], r["f"]))
-    previous_nu = None
-    used_flags, flipped = [], []
-    for r in published:
-        if previous_nu is not None and r["nu"] != previous_nu:
-            lines.append("\\addlinespace")
-        previous_nu = r["nu"]
-        used_flags += [f for f in quality_flags(r["celerity_quality"]) if f not in used_flags] \
-            if finite(r["celerity"]) else []
-        flips = sign_flips(r, other_meshes)
-        if flips:
-            flipped.append(f"({r['nu']:g}, {r['f']:g}) at {' and '.join(flips)}")
-        deviation = "--"
-        if finite(r["celerity"]):
-            d = 100.0 * r["deviation_rel"]
-            # A sign that does not hold across meshes is not a reproduction, whatever this mesh says.
-            bold = r["reproduced"] is True and not flips
-            deviation = f"$\\mathbf{{{d:+.1f}}}$" if bold else f"${d:+.1f}$"
-            if r["sign_match"] is False:
-                deviation += "$^\\dagger$"
-            if r["regime_match"] is False:
-                deviation += "$^\\ddagger$"
-        if r["category_match"] is False:  # also without a celerity: e.g. no opening
-            deviation += "$^\\S$"
-        if flips:
-            deviation += "\\textsuperscript{(m)}"
-        extra = [label(r[c]) if not (isinstance(r[c], float) and math.isnan(r[c]))
-                 else "--" for c in optional]
-        lines.append(" & ".join([f"{r['nu']:g}", f"{r['f']:g}", cell(r["published"], ".3f"),
-                                 regenerated(r), deviation] + extra) + " \\\\")
-    if not published:
-        lines.append(f"\\multicolumn{{{5 + len(optional)}}}{{c}}{{no published cell in the "
-                     "input}} \\\\")
-    lines += ["\\bottomrule", "\\end{tabular}"]
-    notes = [f"({flag_mark(f)}) {QUALITY_MARKS[f][1] if f in QUALITY_MARKS else 'flag ' + flag_mark(f)}"
-             for f in used_flags]
-    if flipped:
-        n_bold = sum(r["reproduced"] is True and not sign_flips(r, other_meshes) for r in published)
-        n_reproduced = sum(r["reproduced"] is True for r in published)
-        notes.append(f"(m) the sign differs at another mesh, so not set in bold: {', '.join(flipped)} "
-                     f"({n_bold} cells bold; reproduced at this mesh alone: {n_reproduced})")
-    ended = sorted({r["end_reason"] for r in published if isinstance(r["end_reason"], str)})
-    if ended:
-        notes.append(f"$^{{*}}$ run did not complete: {', '.join(label(e) for e in ended)}")
-    if notes:  # below the tabular, wrapped at the text width
-        lines.append("\\par\\smallskip{\\footnotesize\\raggedright " + "; ".join(notes) + ".\\par}")
-    return "\n".join(lines) + "\n"
+from analysis.core.atomic import write_file
+from analysis.tables.table1_tex import REQUIRED, cell_key, render
+from table_io import InputError, labelled_paths, read_rows
 
 
 def read_other_mesh(path):
@@ -176,7 +36,7 @@ def main(argv=None):
     except (InputError, ValueError) as err:
         print(f"make_table1.py: error: {err}", file=sys.stderr)
         return 2
-    write_atomically(args.output, render(rows, other_meshes))
+    write_file(args.output, render(rows, other_meshes, generator="paper/make_table1.py"))
     return 0
 
 

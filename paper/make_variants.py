@@ -14,11 +14,10 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from table_io import labelled_paths, write_atomically  # noqa: E402
+from analysis.core.atomic import write_file
+from table_io import labelled_paths
 
 
 SYMBOLS = {"dt": r"$\Delta t$", "c_s": r"$c_s$", "2x2": r"$2\times2$"}
@@ -69,7 +68,7 @@ def main(argv: list[str] | None = None) -> int:
              r"\begin{tabular}[b]{@{}c@{}}median\\$|$dev.$|$\end{tabular} \\",
              r"\midrule", *rows]
     lines += [r"\bottomrule", r"\end{tabular}", ""]
-    write_atomically(args.output, "\n".join(lines))
+    write_file(args.output, "\n".join(lines))
     return 0
 
 

@@ -3,8 +3,7 @@ read one, take one key, each failure an InputError that names the file."""
 
 import json
 
-import table_io  # noqa: F401  (puts the repository on the path for analysis)
-from analysis.errors import InputError  # noqa: E402
+from analysis.core.errors import InputError
 
 
 def read(path):

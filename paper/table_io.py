@@ -1,42 +1,17 @@
-"""Shared by the scripts of paper/: reading the study's CSV tables, LABEL=PATH arguments and atomic
-writes."""
+"""Shared by the scripts of paper/: reading the study's CSV tables, labels, LABEL=PATH arguments.
+Files are written by the project's one atomic writer, `analysis.core.atomic.write_file`."""
 
 from __future__ import annotations
 
-import os
-import sys
-import tempfile
-
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The paper scripts read the study's tables with the analysis package's reader, and report its error.
-from analysis.errors import InputError  # noqa: E402,F401
-from analysis.regime import category_label  # noqa: E402
-from analysis.table_csv import read_table as read_rows  # noqa: E402,F401
+from analysis.core.errors import InputError  # noqa: F401
+from analysis.core.table_csv import read_table as read_rows  # noqa: F401
+from analysis.core.table_render import latex_number  # noqa: F401
+from analysis.metrics.regime import outcome_label
 
 
-#: How an end reason reads; categories read as analysis.regime.CATEGORY_LABELS says (e.g. `no_slip`
-#: is "uniform sliding": the interface slides with the top, below the slip threshold).
-END_REASON_LABELS = {
-    "stop_after_opening": "after opening",
-    "t_end": "end time",
-    "contact_not_converged": "contact not converged",
-}
-
-
-def label(value) -> str:
-    """A category, regime or end reason as text (underscores become spaces otherwise)."""
-    return END_REASON_LABELS.get(str(value)) or category_label(str(value))
-
-
-def latex_number(text: str) -> str:
-    """A formatted number as LaTeX math text: '3.8e-14' -> '3.8\\times10^{-14}', '1e-05' -> '10^{-5}'."""
-    if "e" not in text:
-        return text
-    mantissa, exponent = text.split("e")
-    power = f"10^{{{int(exponent)}}}"
-    if float(mantissa) == 1:
-        return power
-    return ("-" + power) if float(mantissa) == -1 else f"{mantissa}\\times{power}"
+#: A category, regime or end reason as text (one definition: analysis.metrics.regime).
+label = outcome_label
 
 
 def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
@@ -51,28 +26,3 @@ def labelled_paths(items: list[str], what: str) -> list[tuple[str, str]]:
             raise ValueError(f"{item!r} is not LABEL={what}")
         pairs.append((label, path))
     return pairs
-
-
-def current_umask() -> int:
-    """The process's file-mode creation mask (reading it means setting it: set it straight back)."""
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
-
-
-def write_atomically(path: str, text: str) -> None:
-    """Write `text` to `path` through a temporary file and a rename: never a partial file.
-
-    The file gets the mode of any other new file (0666 less the umask), not the temporary file's
-    0600, which the rename would keep: colleagues sharing the project folder can read the tables.
-    """
-    directory = os.path.dirname(os.path.abspath(path))
-    os.makedirs(directory, exist_ok=True)
-    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as out:
-        try:
-            out.write(text)
-            os.chmod(out.name, 0o666 & ~current_umask())
-        except BaseException:
-            os.unlink(out.name)
-            raise
-    os.replace(out.name, path)

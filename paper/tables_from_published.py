@@ -3,34 +3,27 @@
 study/results/<sweep>/all_metrics.csv, with the current analysis: a machine without the runs (no
 HDF5, no metrics.json) can build the paper from the committed measurements.
 
-    paper/tables_from_published.py --published study/results --flutter results/theory/flutter.txt \\
+    paper/tables_from_published.py --published study/results \\
         --reference study/reference/table1_celerity.csv --tolerance 0.05 -o results
 
 Each row of all_metrics.csv is one run's scalar metrics; they are aggregated again by
-`analysis.aggregate.aggregate` (derived columns, Table 1 flags), not edited. Table 1 of a sweep takes
+`analysis.tables.aggregate.aggregate` (Table 1 flags), not edited. Table 1 of a sweep takes
 the runs that its committed table1.csv compared (same cell, celerity and min T/N), so the selection is the one
 the pipeline made. Nothing is measured here and nothing under study/results is written.
 """
 import argparse
 import math
-import os
 import sys
 from pathlib import Path
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from analysis import aggregate as agg  # noqa: E402
-from analysis.errors import InputError  # noqa: E402
-from analysis.reference import cell_key, read_reference  # noqa: E402
-from analysis.table_csv import read_table  # noqa: E402
-
-#: Columns aggregate derives: dropped from the committed rows so that the current formulas make them.
-DERIVED = set(agg.DERIVED_COLUMNS)
-
+from analysis.core.errors import InputError
+from analysis.core.table_csv import read_table
+from analysis.tables import aggregate as agg
+from analysis.tables.reference import cell_key, read_reference
 
 def as_metrics(row):
     """A committed all_metrics.csv row as the metrics dict it was written from (nan -> None)."""
-    return {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in row.items()
-            if k not in DERIVED}
+    return {k: (None if isinstance(v, float) and math.isnan(v) else v) for k, v in row.items()}
 
 
 def same(value, written):
@@ -57,21 +50,19 @@ def table_runs(runs, table_path):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--published", type=Path, required=True, help="study/results")
-    parser.add_argument("--flutter", type=Path, required=True, help="flutter-boundary output")
     parser.add_argument("--reference", type=Path, required=True, help="the published Table 1")
     parser.add_argument("--tolerance", type=float, required=True)
     parser.add_argument("-o", "--output", type=Path, required=True, help="results folder to fill")
     args = parser.parse_args(argv)
     try:
         reference = read_reference(args.reference)
-        flutter = agg.read_flutter(args.flutter)
         sweeps = sorted(p.parent for p in args.published.glob("*/all_metrics.csv"))
         if not sweeps:
             raise InputError(f"{args.published}: no <sweep>/all_metrics.csv")
         for folder in sweeps:
             runs = [as_metrics(r) for r in read_table(folder / "all_metrics.csv", ("nu", "f", "celerity"))]
             files, _ = agg.aggregate(runs, table_runs(runs, folder / "table1.csv"), reference,
-                                     args.tolerance, flutter)
+                                     args.tolerance)
             out = args.output / folder.name / "table"
             out.mkdir(parents=True, exist_ok=True)
             for name, text in files.items():

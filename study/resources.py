@@ -18,7 +18,15 @@ from __future__ import annotations
 
 import math
 
+from analysis.theory import elastic
 from study.run_length import shear_wave_speed
+
+#: The measurements the model is fitted to: (elements_per_H, lambda_over_H) -> ms per step on one
+#: core (docs/performance.md). A new benchmark changes this table and the fit below, not the tests,
+#: which check the fit against this table (tests/pipeline/test_run_length.py).
+MEASURED_MS_PER_STEP = {(32, 2.0): 0.140, (64, 2.0): 0.594, (128, 2.0): 4.50, (64, 6.0): 4.64}
+#: The model may overestimate a measurement by this factor, never underestimate it (by more than 1 %).
+MAX_OVERESTIMATE = 1.35
 
 MS_PER_STEP_H32 = 0.14
 MESH_EXPONENT = 2.5    # per halving of h
@@ -34,8 +42,8 @@ def ms_per_step(elements_per_H: int, lambda_over_H: float) -> float:
 def n_steps(*, E: float, nu: float, rho: float, t_end: float, dt_times_cs: float = 0.5,
             dt: float | None = None) -> int:
     """Number of stage-3 steps to reach t_end."""
-    step = dt if dt is not None else dt_times_cs / shear_wave_speed(E, nu, rho)
-    return math.ceil(t_end / step * (1.0 - 1e-12))  # an exact multiple is not one step more
+    step = elastic.time_step(shear_wave_speed(E, nu, rho), dt_times_cs, dt)
+    return elastic.n_steps(t_end, step)
 
 
 def estimate(*, elements_per_H: int, lambda_over_H: float, steps: int) -> dict:

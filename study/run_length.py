@@ -23,10 +23,9 @@ A run ends at
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
-from analysis import theory
+from analysis.theory import elastic
 
 
 @dataclass(frozen=True)
@@ -39,16 +38,16 @@ class RunLength:
     stop_after_opening: float | None  #: end this long after the first opening, or None
 
 
-# The formulas live in one place, analysis/theory.py (the measurement side uses the same ones).
-shear_modulus = theory.shear_modulus
-shear_wave_speed = theory.shear_wave_speed
+# The formulas live in one place, analysis/theory/elastic.py (the measurement side uses the same ones).
+shear_modulus = elastic.shear_modulus
+shear_wave_speed = elastic.shear_wave_speed
 
 
 def onset_time_estimate(*, E: float, nu: float, rho: float, H: float, f: float,
                         Uy_over_H: float, preshear_ratio: float, V0_over_cs: float) -> float:
     """Quasi-static time (s) at which T/N reaches f, eq. (1) of the module docstring."""
-    return theory.onset_time_estimate(f=f, preshear_ratio=preshear_ratio,
-                                      p0=theory.preload_pressure(Uy_over_H * H, E, nu, H), H=H, E=E, nu=nu,
+    return elastic.onset_time_estimate(f=f, preshear_ratio=preshear_ratio,
+                                      p0=elastic.preload_pressure(Uy_over_H * H, E, nu, H), H=H, E=E, nu=nu,
                                       V0=V0_over_cs * shear_wave_speed(E, nu, rho))
 
 

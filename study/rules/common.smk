@@ -123,7 +123,7 @@ def sweep_products(sweep, with_report=True):
     if "comparison" in products:
         files.append(f"results/{sweep}/table/comparison.txt")
     if "ensemble" in products:
-        files += ensemble_files(sweep)  # study/rules/tables.smk
+        files += ensemble_files(sweep)  # study/rules/ensemble.smk
     if with_report and "report" in products:
         files.append(f"results/{sweep}/report.html")
     return files

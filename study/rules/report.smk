@@ -145,6 +145,7 @@ rule paper_claims:
     Conclusions drawn from them (paper/make_claims.py)."""
     input:
         script="paper/make_claims.py",
+        rules=["analysis/tables/claims.py", "analysis/tables/claim_support.py"],  # the verdicts make_claims.py renders
         claims=repo_path("study/reference/claims.json"),
         tables=lambda wc: list(claim_tables().values()),
         meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],
@@ -256,8 +257,8 @@ rule paper:
         conclusions="paper/generated/conclusions.tex",
         figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
-        how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/tables.smk
-        how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/tables.smk
+        how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/ensemble.smk
+        how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/limits.smk
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:

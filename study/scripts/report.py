@@ -23,7 +23,7 @@ layout at the page width (long run names wrap), so that it needs no horizontal s
 tables scroll on a wide screen and wrap in print and on a narrow screen (under 60em).
 Nothing is computed here: deviations, signs, regimes, categories and the celerity's window
 sensitivity are the aggregate's columns or metrics.json keys, wall time and memory Snakemake's
-benchmark of `simulate`; categories read as analysis.regime.CATEGORY_LABELS says.
+benchmark of `simulate`; categories read as analysis.metrics.regime.CATEGORY_LABELS says.
 """
 
 from __future__ import annotations
@@ -40,8 +40,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-from analysis.regime import category_label  # noqa: E402
+import analysis
+from analysis.metrics.regime import category_label
 
 #: metrics.json keys shown per run, when present, and their column headings.
 RUN_KEYS = {"category": "category", "regime": "regime", "onset_time": "slip onset (s)",
@@ -272,7 +272,7 @@ def runs_html(runs: list[dict]) -> str:
 
 
 def provenance_html(runs: list[dict]) -> str:
-    """Pipeline commit and what wrote the runs (solver version and commit as the metrics report them)."""
+    """Project version, pipeline commit and what wrote the runs (solver version and commit as the metrics report them)."""
     root = Path(__file__).resolve().parents[2]
     try:
         commit = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty"],
@@ -284,7 +284,7 @@ def provenance_html(runs: list[dict]) -> str:
         metrics = read_json(Path(run["dir"]) / "metrics.json")
         writers.add(tuple(str(metrics.get(k, "?")) for k in ("slidewave_version", "git_commit")))
     items = [f"generated {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M UTC}",
-             f"pipeline commit {html.escape(commit)}",
+             f"slidewave {html.escape(analysis.__version__)} (analysis), pipeline commit {html.escape(commit)}",
              f"Python {platform.python_version()} on {html.escape(platform.node())}"]
     items += [f"runs written by slidewave {html.escape(v)} (commit {html.escape(c)})" for v, c in sorted(writers)]
     return "<ul>" + "".join(f"<li>{item}</li>" for item in items) + "</ul>"

@@ -1,18 +1,9 @@
-"""Fixtures of the analysis tests: the repository root on sys.path (so `import analysis` works
-however pytest is started) and `run_file`, which writes a synthetic run.h5 (see synthetic_run.py)."""
-
-import sys
-from pathlib import Path
+"""Fixtures of the analysis tests: `run_file`, which writes a synthetic run.h5 (see
+tests/support/synthetic_run.py; tests/support is on the path through pyproject.toml)."""
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-HERE = Path(__file__).resolve().parent
-for folder in (ROOT, HERE):
-    if str(folder) not in sys.path:
-        sys.path.insert(0, str(folder))
-
-from synthetic_run import write_run  # noqa: E402
+from synthetic_run import write_run
 
 
 @pytest.fixture

@@ -52,7 +52,7 @@ def test_flutter_boundary_command_calls_analysis_flutter(monkeypatch, capsys):
         calls.append(nu)
         return (1.0, float("inf")) if nu < 0.25 else (float("nan"), float("nan"))
 
-    monkeypatch.setitem(sys.modules, "analysis.flutter", types.SimpleNamespace(flutter_boundary=boundary))
+    monkeypatch.setitem(sys.modules, "analysis.theory.flutter", types.SimpleNamespace(flutter_boundary=boundary))
     assert cli.main(["flutter-boundary", "--nu", "0", "0.1", "0.4"]) == 0
     assert capsys.readouterr().out.splitlines() == ["0 1 inf", "0.1 1 inf", "0.4 nan nan"]
     assert calls == [0.0, 0.1, 0.4]
@@ -61,9 +61,9 @@ def test_flutter_boundary_command_calls_analysis_flutter(monkeypatch, capsys):
 
 
 def test_flutter_boundary_command_with_the_real_module():
-    flutter = pytest.importorskip("analysis.flutter")
+    flutter = pytest.importorskip("analysis.theory.flutter")
     if not hasattr(flutter, "flutter_boundary"):
-        pytest.skip("analysis.flutter has no flutter_boundary yet")
+        pytest.skip("analysis.theory.flutter has no flutter_boundary yet")
     result = run_cli("flutter-boundary", "--nu", "0", "0.3")
     assert result.returncode == 0, result.stderr
     lines = [line.split() for line in result.stdout.splitlines()]
@@ -99,8 +99,8 @@ def test_measure_refuses_to_write_over_its_input(run_file, tmp_path):
 
 
 def test_bimaterial_command_prints_the_regime_of_the_theory(capsys):
-    from analysis.bimaterial_stability import bimaterial_regime, instability_threshold
-    from analysis.interface_wave import ElasticSolid
+    from analysis.theory.bimaterial_stability import bimaterial_regime, instability_threshold
+    from analysis.theory.interface_wave import ElasticSolid
 
     assert cli.main(["bimaterial", "--E-ratio", "3", "--nu", "0.2", "--nu-substrate", "0.2",
                      "--f", "0.5", "1"]) == 0

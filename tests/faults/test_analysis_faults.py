@@ -2,7 +2,7 @@
 
 Each test drives `python3 -m analysis` as a user would and asserts that nothing looking like a
 result is left, that no input is destroyed, and that the message names the cause. Run files are the
-synthetic ones of tests/analysis/synthetic_run.py (format_version 2); this file needs no conftest.
+synthetic ones of tests/support/synthetic_run.py (format_version 2); this file needs no conftest.
 """
 
 import json
@@ -15,8 +15,7 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tests" / "analysis"))
-from synthetic_run import (Pulse, Scenario, corrupt_stored_chunk, paper_case,  # noqa: E402
+from synthetic_run import (Pulse, Scenario, corrupt_stored_chunk, paper_case,
                            store_with_filters, write_run)
 
 REFERENCE = ROOT / "study" / "reference" / "table1_celerity.csv"

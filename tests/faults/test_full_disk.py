@@ -8,15 +8,12 @@ folders."""
 
 import json
 import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import solver_or_skip  # noqa: E402
+from solver_runs import solver_or_skip
 
 # H/16, ~5000 steps: over a megabyte of output, far above the 200 KiB file-size limit.
 CONFIG = {

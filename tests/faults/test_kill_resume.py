@@ -14,15 +14,13 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import solver_or_skip  # noqa: E402
+from solver_runs import solver_or_skip
 
 # H/16 with a short step: 25820 steps, a few seconds of wall time; checkpoints every 0.2 s.
 CONFIG = {

@@ -15,7 +15,7 @@ GRID = ["elements_per_H=32", "lambda_over_H=2", "rho=1000", "V0_over_cs=1e-5", "
 
 
 def report_jobs(data):
-    """The 22 figures reproduction.tex expects, as the pipeline would make them:
+    """The figures reproduction.tex expects (config `paper.figures`), as the pipeline would make them:
     {name: (script, args...)} with paths into the synthetic data folder."""
     jobs = {
         "fig2a_slip_velocity": ("spacetime", data / "run.h5", "--field", "slip_velocity",

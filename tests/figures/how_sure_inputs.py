@@ -1,15 +1,12 @@
 """A small made-up ensemble (three published cells, three seeds, one mesh variant) run through
-analysis.ensemble and analysis.envelope, and the generated inputs of paper/how_sure.tex made from
+analysis.confidence.ensemble and analysis.confidence.envelope, and the generated inputs of paper/how_sure.tex made from
 it: for tests/figures/test_how_sure.py and the full report build of test_paper.py."""
 import csv
 import json
-import sys
 
-from figure_support import PAPER, ROOT, call, command
+from figure_support import PAPER, call, command
 
-sys.path.insert(0, str(ROOT))
-from analysis import ensemble as ensemble_module  # noqa: E402
-from analysis import envelope as envelope_module  # noqa: E402
+from analysis import cli
 
 REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
 SEEDS = {(0.2, 1.5): [0.86, 0.85, 0.87], (0.45, 1.0): [-2.68, -2.66, 1.0], (0.0, 1.1): [0.99, 1.01, 0.97]}
@@ -33,7 +30,7 @@ def write_tables(folder):
              "elements_per_H": 64}
             for (nu, f), values in SEEDS.items() for seed, c in enumerate(values, start=1)]
     write_csv(folder / "all_metrics.csv", runs)
-    assert ensemble_module.main([str(folder / "all_metrics.csv"), "--reference", str(folder / "ref.csv"),
+    assert cli.main(["ensemble", str(folder / "all_metrics.csv"), "--reference", str(folder / "ref.csv"),
                                  "-o", str(folder)]) == 0
     write_csv(folder / "h32.csv", [{"nu": nu, "f": f, "celerity": values[0] * 1.08, "celerity_reason": "ok"}
                                    for (nu, f), values in SEEDS.items()])
@@ -41,7 +38,7 @@ def write_tables(folder):
                                    for (nu, f), values in SEEDS.items()])
     spec = {"variants": [{"factor": "mesh", "label": "H/32", "table": str(folder / "h32.csv"),
                           "base": str(folder / "h64.csv")}]}
-    assert envelope_module.main(["--ensemble", str(folder / "ensemble.csv"), "--spec", json.dumps(spec),
+    assert cli.main(["envelope", "--ensemble", str(folder / "ensemble.csv"), "--spec", json.dumps(spec),
                                  "-o", str(folder)]) == 0
     (folder / "flutter.txt").write_text("0 nan nan\n0.2 1.0 inf\n0.45 1.0 inf\n")
     return folder

@@ -1,14 +1,13 @@
 """Made-up inputs of the limits subsections of paper/how_sure.tex (three published cells at three
 meshes, one backward cell at four time steps and two seeds, a Fig. 3 timeline, pulse counts) run
-through analysis.mesh_limit, timestep_limit, timeline and pulse_seeds: for
+through analysis.confidence.mesh_limit, timestep_limit, timeline and pulse_seeds: for
 tests/figures/test_how_sure_limits.py and the full report build of test_paper.py."""
-import sys
 
-from figure_support import PAPER, ROOT, call, command
+from figure_support import PAPER, call, command
 from how_sure_inputs import write_csv
 
-sys.path.insert(0, str(ROOT))
-from analysis import mesh_limit, pulse_seeds, timeline, timestep_limit  # noqa: E402
+from analysis import cli
+from analysis.confidence import timeline
 
 REFERENCE = "nu,f,celerity_m_per_s\n0.2,1.5,0.882\n0.45,1.0,-2.523\n0.0,1.1,0.861\n"
 MESHES = {32: {(0.2, 1.5): 0.84, (0.45, 1.0): -2.68, (0.0, 1.1): 0.99},
@@ -25,11 +24,11 @@ def write_limits(folder):
     for n, cells in MESHES.items():
         rows = [{"nu": nu, "f": f, "seed": 1, "celerity": c, "celerity_reason": "ok"} for (nu, f), c in cells.items()]
         args += ["--mesh", f"{n}={write_csv(folder / f'h{n}.csv', rows)}"]
-    assert mesh_limit.main(args + ["--reference", str(folder / "ref.csv"), "-o", str(folder)]) == 0
+    assert cli.main(["mesh-limit"] + args + ["--reference", str(folder / "ref.csv"), "-o", str(folder)]) == 0
     runs = [{"nu": 0.45, "f": 1.0, "dt_times_cs": dt, "seed": seed, "elements_per_H": 64,
              "celerity": mean + (seed - 1.5) * 0.02, "celerity_reason": "ok"}
             for dt, mean in DT_MEANS.items() for seed in (1, 2)]
-    assert timestep_limit.main([str(write_csv(folder / "dt.csv", runs)), "--reference", str(folder / "ref.csv"),
+    assert cli.main(["timestep-limit", str(write_csv(folder / "dt.csv", runs)), "--reference", str(folder / "ref.csv"),
                                 "-o", str(folder)]) == 0
     events = dict(onset_time=744.0, localization_time=908.0, celerity_window_start=909.0, first_opening_time=1018.0,
                   slip_velocity_max_time=1064.0, first_drop_start_time=839.0, min_T_over_N_time=1301.0)
@@ -42,7 +41,7 @@ def write_limits(folder):
                "pulse_count_theory": lam / 2 + 1, "pulse_next_strength": 0.3,
                "later_drops_start_T_over_N_median": 0.65 if s == 1 else "", "end_reason": "stop_after_opening"}
               for lam, count in ((2.0, 1), (4.0, 2), (6.0, 3)) for s in (1, 2)]
-    assert pulse_seeds.main([str(write_csv(folder / "pulses.csv", pulses)), "-o", str(folder)]) == 0
+    assert cli.main(["pulse-seeds", str(write_csv(folder / "pulses.csv", pulses)), "-o", str(folder)]) == 0
     return folder
 
 

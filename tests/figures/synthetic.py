@@ -3,7 +3,7 @@ series and snapshots; all_metrics.csv, table1.csv, flutter.txt, metrics.json, su
 
 The fields look like the paper's nu=0.2, f=1.5 case (a pulse at c_p = 0.85 m/s that opens the
 interface and drops T/N below zero) so that the figures made from them can be judged by eye.
-`python3 tests/figures/synthetic.py DIR` writes them all to DIR.
+`PYTHONPATH=.:tests/support python3 tests/figures/synthetic.py DIR` writes them all to DIR.
 """
 import csv
 import json
@@ -13,9 +13,11 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-from analysis import aggregate, pulses, theory  # noqa: E402
-from analysis.reference import ReferenceCell  # noqa: E402
+from analysis.metrics import pulses
+from analysis.tables import aggregate
+from analysis.tables.reference import ReferenceCell
+from analysis.theory import elastic, flutter
+from synthetic_run import write_run_file
 
 E, RHO, H = 1000.0, 1000.0, 25.0
 PUBLISHED = {  # a few cells of the paper's Table 1, (nu, f): c_p in m/s
@@ -41,8 +43,7 @@ def _stamp(dataset, unit, description):
 def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_over_H=2.0,
               c_p=0.85, format_version=2, snapshots=True, periodic_connectivity=False,
               t_end=1200.0):
-    import h5py
-
+    """A run file (tests/support/synthetic_run.py: write_run_file) of a pulse like the paper's case."""
     c_s, c_l = speeds(nu)
     lam, h = lambda_over_H * H, H / elements_per_H
     dt = 0.5 / c_s
@@ -67,42 +68,36 @@ def write_run(path, nu=0.2, f=1.5, v0_over_cs=1e-5, elements_per_H=16, lambda_ov
     t_over_n = rise - drop + np.where(tg > 1000.0, 0.001 * (tg - 1000.0), 0.0)
     n_force = p0 * lam * np.ones_like(tg)
 
-    with h5py.File(path, "w") as file:
-        config = {"material": {"E": E, "nu": nu, "rho": RHO},
-                  "geometry": {"H": H, "lambda_over_H": lambda_over_H},
-                  "mesh": {"elements_per_H": elements_per_H, "integration": "reduced"},
-                  "loading": {"V0_over_cs": v0_over_cs}, "friction": {"f": f}}
-        attrs = dict(format_version=format_version, creator="slidewave",
-                     slidewave_version="0.0.0-test", git_commit="synthetic", call="synthetic",
-                     created_utc="2024-01-01T00:00:00Z", config=json.dumps(config), complete=1,
-                     end_reason="t_end", n_steps_done=len(tg) - 1)
-        for key, value in attrs.items():
-            file.attrs[key] = value
-        # format_version 2: the derived constants and the verbatim input are /setup attributes.
-        setup = dict(config_input=json.dumps(config), E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s,
-                     c_l=c_l, p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
-                     t_onset_estimate=onset, u_x_preshear=0.09, opening_threshold=0.01 * 0.001 * H)
-        setup["lambda"] = lam
-        group = file.create_group("setup")
-        for key, value in setup.items():
-            group.attrs[key] = value
-        interface = {"x": (x, "m", "node positions"), "t": (t, "s", "output times"),
-                     "slip_velocity": (slip_velocity, "m/s", "slip rate"),
-                     "slip": (np.cumsum(slip_velocity, axis=0) * 4 * dt, "m", "slip"),
-                     "opening": (opening, "m", "u_y"),
-                     "normal_traction": (p0 * (1 - 5 * slip_velocity), "Pa", "pressure"),
-                     "tangential_traction": (f * p0 * np.ones_like(opening), "Pa", "traction"),
-                     "state": (state, "1", "0 open, 1 stick, 2 slip")}
-        for name, (data, unit, description) in interface.items():
-            _stamp(file.create_dataset(f"/interface/{name}", data=data), unit, description)
-        series = {"t": tg, "T": t_over_n * n_force, "N": n_force, "T_over_N": t_over_n,
-                  "energy_kinetic": 0 * tg, "energy_elastic": 0 * tg, "work_external": 0 * tg,
-                  "dissipation_friction": 0 * tg, "energy_balance_residual": 0 * tg,
-                  "contact_iterations": 0 * tg + 5, "contact_residual": 0 * tg + 1e-12}
-        for name, data in series.items():
-            _stamp(file.create_dataset(f"/global/{name}", data=data), "-", name)
-        if snapshots:
-            _write_snapshots(file, lam, h, elements_per_H, c_p, onset, periodic_connectivity)
+    config = {"material": {"E": E, "nu": nu, "rho": RHO},
+              "geometry": {"H": H, "lambda_over_H": lambda_over_H},
+              "mesh": {"elements_per_H": elements_per_H, "integration": "reduced"},
+              "loading": {"V0_over_cs": v0_over_cs}, "friction": {"f": f}}
+    attrs = dict(format_version=format_version, creator="slidewave",
+                 slidewave_version="0.0.0-test", git_commit="synthetic", call="synthetic",
+                 created_utc="2024-01-01T00:00:00Z", config=json.dumps(config), complete=1,
+                 end_reason="t_end", n_steps_done=len(tg) - 1)
+    # format_version 2: the derived constants and the verbatim input are /setup attributes.
+    setup = dict(config_input=json.dumps(config), E=E, nu=nu, rho=RHO, H=H, h=h, f=f, c_s=c_s,
+                 c_l=c_l, p0=p0, V0=v0_over_cs * c_s, dt=dt, t_end=t_end, hht_alpha=0.1,
+                 t_onset_estimate=onset, u_x_preshear=0.09, opening_threshold=0.01 * 0.001 * H)
+    setup["lambda"] = lam
+    interface = {"x": (x, "m", "node positions"), "t": (t, "s", "output times"),
+                 "slip_velocity": (slip_velocity, "m/s", "slip rate"),
+                 "slip": (np.cumsum(slip_velocity, axis=0) * 4 * dt, "m", "slip"),
+                 "opening": (opening, "m", "u_y"),
+                 "normal_traction": (p0 * (1 - 5 * slip_velocity), "Pa", "pressure"),
+                 "tangential_traction": (f * p0 * np.ones_like(opening), "Pa", "traction"),
+                 "state": (state, "1", "0 open, 1 stick, 2 slip")}
+    series = {"t": tg, "T": t_over_n * n_force, "N": n_force, "T_over_N": t_over_n,
+              "energy_kinetic": 0 * tg, "energy_elastic": 0 * tg, "work_external": 0 * tg,
+              "dissipation_friction": 0 * tg, "energy_balance_residual": 0 * tg,
+              "contact_iterations": 0 * tg + 5, "contact_residual": 0 * tg + 1e-12}
+
+    def add_snapshots(file):
+        _write_snapshots(file, lam, h, elements_per_H, c_p, onset, periodic_connectivity)
+
+    write_run_file(path, attrs, setup, interface, {name: (data, "-", name) for name, data in series.items()},
+                   extend=add_snapshots if snapshots else None)
 
 
 def _write_snapshots(file, lam, h, n_y, c_p, onset, periodic):
@@ -142,7 +137,6 @@ def category_of(nu, f):
 
 
 def metrics_rows():
-    rows = []
     base = dict(V0_over_cs=1e-5, lambda_over_H=2.0, elements_per_H=32, rho=1000.0,
                 integration="reduced", Uy_over_H=-0.001, preshear_ratio=0.95, hht_alpha=0.1)
 
@@ -170,7 +164,7 @@ def metrics_rows():
                  friction_energy_share_opening=0.5 if opening else None,
                  dt=r.setdefault("dt_times_cs", 0.5) / c_s, metrics_file=f"nu{nu}_f{f}/metrics.json",
                  below_sqrt2_cs=abs(celerity) < math.sqrt(2.0) * c_s, complete=True,
-                 pulse_spacing_theory=theory.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
+                 pulse_spacing_theory=elastic.pulse_spacing(celerity, c_s, H), end_reason="stop_after_opening",
                  localization_time=760.0 + 300 * nu, first_opening_time=(900.0 + 300 * nu) if opening else None,
                  first_drop_start_time=950.0 + 300 * nu, first_drop_bottom_time=990.0 + 300 * nu,
                  first_drop_bottom_T_over_N=-0.3 if "inversion" in category else 0.6,
@@ -181,8 +175,12 @@ def metrics_rows():
             r.update(celerity=None, regime=None, below_sqrt2_cs=None, pulse_count=None, pulse_spacing=None,
                      pulse_spacing_theory=math.nan)
         r["pulse_count_theory"] = pulses.expected_pulse_count(r["lambda_over_H"] * H, r["pulse_spacing_theory"])
-        # What `analysis aggregate` adds to all_metrics.csv.
-        r.update(aggregate.derived_columns(r, flutter_boundary()))
+        # The metrics measure derives from the others (analysis.metrics.measure), as it writes them.
+        c = r["celerity"]
+        r.update(celerity_over_cs=None if c is None else c / c_s,
+                 first_drop_start_after_onset=r["first_drop_start_time"] - r["onset_time"],
+                 first_drop_duration=r["first_drop_bottom_time"] - r["first_drop_start_time"],
+                 first_drop_complete=r["n_complete_drops"] >= 1, inside_flutter_wedge=flutter.inside_wedge(nu, f))
         return r
 
     return [row(nu, f, **{parameter: value} if parameter else {})
@@ -257,11 +255,6 @@ FLUTTER = """# nu f_lower f_upper
 0.45 nan nan
 """
 
-
-def flutter_boundary():
-    """FLUTTER as aggregate.read_flutter returns it."""
-    return [tuple(float(x) for x in line.split()) for line in FLUTTER.splitlines()
-            if line.strip() and not line.startswith("#")]
 
 
 #: The three runs of paper/make_energy_evidence.py: option -> (hht_alpha, contact weighting).

@@ -4,7 +4,6 @@ the pipeline's raw strings, and the snapshot colour scale is logarithmic so that
 are not black beside fast ones."""
 import csv
 
-import numpy as np
 import pytest
 from figure_support import call
 

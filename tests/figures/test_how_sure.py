@@ -1,5 +1,5 @@
 """The section "How sure is this table": the envelope figure, the phase diagram of an ensemble and
-paper/make_how_sure.py, from tables that analysis.ensemble and analysis.envelope write for a small
+paper/make_how_sure.py, from tables that analysis.confidence.ensemble and analysis.confidence.envelope write for a small
 made-up ensemble (three cells, three seeds, two method variants)."""
 import json
 import re

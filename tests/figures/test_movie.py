@@ -7,13 +7,11 @@ solver binary or ffmpeg/ffprobe the tests that need them are skipped (a failure 
 import json
 import shutil
 import subprocess
-import sys
 
 import pytest
 from figure_support import ROOT, call, command
 
-sys.path.insert(0, str(ROOT / "tests" / "support"))
-from solver_runs import missing, tiny_run as solver_run  # noqa: E402
+from solver_runs import missing, tiny_run as solver_run
 
 FRAME_TIMES = [3.0 * k for k in range(21)]
 

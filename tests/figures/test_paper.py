@@ -39,11 +39,16 @@ def test_every_table_of_the_report_is_declared():
 
 
 def expected_figures():
+    """The figures of reproduction.tex: exactly `paper.figures` of study/config.yaml (the one list;
+    paper/Makefile reads it), and the synthetic jobs of figure_support draw each of them."""
+    import yaml
+
+    from figure_support import report_jobs
+
     names = re.findall(r"\\generatedfigure\{([\w]+)\}", (PAPER / "reproduction.tex").read_text())
-    assert len(names) == 22
-    make = (PAPER / "Makefile").read_text()
-    listed = re.search(r"FIGURES = (.*?)\n\n", make, re.S).group(1).replace("\\", " ").split()
-    assert sorted(listed) == sorted(names), "Makefile FIGURES and reproduction.tex disagree"
+    declared = yaml.safe_load((PAPER.parent / "study" / "config.yaml").read_text())["paper"]["figures"]
+    assert sorted(declared) == sorted(names), "config paper.figures and reproduction.tex disagree"
+    assert sorted(report_jobs(PAPER)) == sorted(names)
     return names
 
 

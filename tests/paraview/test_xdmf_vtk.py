@@ -8,15 +8,12 @@ is a wrong pointer, shape or type). The reader is VTK's vtkXdmfReader (XDMF 2 li
 (python3-paraview, scripts/setup.sh). Skipped without it or without the solver binary (a failure
 under CI=true).
 """
-import sys
-from pathlib import Path
 
 import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import missing, tiny_run  # noqa: E402
+from solver_runs import missing, tiny_run
 
 SNAPSHOT_TIMES = [0.0, 20.0, 45.5]
 INTERFACE_FIELDS = ("slip_velocity", "slip", "opening", "normal_traction", "tangential_traction", "state")

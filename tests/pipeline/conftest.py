@@ -1,24 +1,19 @@
-"""Shared set-up of the pipeline tests: the repository on sys.path, the study config, the `slurm`
+"""Shared set-up of the pipeline tests: the study config, the `slurm`
 marker (skipped unless selected with `-m slurm` or SLIDEWAVE_TEST_SLURM=1), and a runner for
 Snakemake in a scratch directory."""
 
 import copy
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
 
 REPO = Path(__file__).resolve().parents[2]
-if str(REPO) not in sys.path:
-    sys.path.insert(0, str(REPO))
-
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
 # SOLVER and solver_or_skip are re-exported to the pipeline tests.
-sys.path.insert(0, str(REPO / "tests" / "support"))
-from solver_runs import SOLVER, solver_or_skip  # noqa: E402,F401
+from solver_runs import SOLVER, solver_or_skip  # noqa: F401
 
 
 def pytest_configure(config):

@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from .conftest import REPO, job_counts, snakemake
+from .conftest import job_counts, snakemake
 
 
 def test_explore_plans_one_run_its_figures_and_summary(tmp_path):

@@ -3,7 +3,6 @@ aggregate's deviations and flags (only for a sweep that compares with Table 1), 
 embedded under real captions, the runs carry c_p with its uncertainty, labels and provenance, wide
 tables scroll."""
 
-import base64
 import importlib.util
 import html
 import json

@@ -12,7 +12,7 @@ from snakemake.utils import validate
 from study import sweeps
 from study.make_run_config import run_config
 
-from .conftest import REPO, SOLVER
+from .conftest import REPO
 
 SCHEMA = str(REPO / "study" / "config.schema.yaml")
 

@@ -2,7 +2,7 @@
 // docs/energy-balance.md) against the energy balance residual of the same run. The residual is what the
 // ledger cannot attribute (E_kin + E_el + D_fric + W_normal - E(0) - W_ext); the dissipation is computed
 // from the step's quantities by the three HHT terms. Oracle: dissipation_hht = -residual to round-off
-// (relative to the energy that flowed, the scale of analysis/energy.py), on a run that slips, opens and
+// (relative to the energy that flowed, the scale of analysis/metrics/energy.py), on a run that slips, opens and
 // drops (the paper's case nu = 0.2, f = 1.5 at H/16 to 1300 s); each term matters (dropping any one breaks
 // the closure by orders of magnitude over the tolerance), and at hht_alpha = 0 every term is zero and
 // the residual stays at round-off (H/32, where the undamped run opens too).
@@ -29,7 +29,7 @@ nlohmann::json paper_case(double alpha, const char* weighting, const char* decom
           {"output", {{"energy_decomposition", decomposition}}}};
 }
 
-/// The energy that flowed in the run (analysis/energy.py): the largest of max |W_ext|,
+/// The energy that flowed in the run (analysis/metrics/energy.py): the largest of max |W_ext|,
 /// max |E_el - E_el(0)|, max E_kin, max D_fric.
 double energy_flowed(const GlobalSeries& g) {
   double scale = 0;

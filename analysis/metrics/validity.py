@@ -1,0 +1,93 @@
+"""Whether a run can be measured at all: a non-physical state, or output sampled too coarsely.
+
+Two ways a run can produce numbers that look like a result and are not:
+
+- **Non-physical state.** A run that blew up (typically one that ended on `contact_not_converged`)
+  can open by hundreds of metres on a 25 m layer, or hold non-finite values. The model is linear
+  elasticity of a layer of height H under small strains: an opening larger than H is outside it
+  whatever the cause. Such a run is `non_physical`; its metrics are kept (measured on the finite
+  part of the run) so that the state stays visible, and it stays out of Table 1.
+- **Sampling too coarse.** The interface fields are written every `interface_stride` steps, every
+  dt_out seconds. The layer's dynamics proceeds in shear round trips 2H/c_s (the staircase of T/N,
+  the spacing 2H sqrt(c_p^2/c_s^2 - 1) of a pulse train, the ringing after a frictional drop);
+  a front is fitted from at least `MIN_FRAMES_PER_ROUND_TRIP` points (`tracking.DEFAULT_MIN_POINTS`).
+  With fewer frames per round trip a pulse that forms, runs and opens within a few round trips can
+  fall between frames, and the run comes out as `no_slip` or without a front although it opened.
+  The paper's sampling (stride 4, dt = 0.5 m / c_s at H = 25 m) gives 25 frames per round trip;
+  the study's coarsest (dt = 1 m / c_s) 12.5.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from analysis.core.errors import InputError
+from analysis.core.io import GlobalSeries, InterfaceFields, RunData
+from analysis.fronts.tracking import DEFAULT_MIN_POINTS
+
+#: Fewest interface output frames per shear round trip 2H/c_s (and in the whole run).
+MIN_FRAMES_PER_ROUND_TRIP = DEFAULT_MIN_POINTS
+
+
+@dataclass(frozen=True)
+class Sampling:
+    """frames_per_round_trip = 2H / (c_s dt_out) (-, nan with one frame); too_coarse (bool)."""
+
+    frames_per_round_trip: float
+    too_coarse: bool
+
+
+def sampling(t: np.ndarray, H: float, c_s: float) -> Sampling:
+    """Whether the interface output times t (s) resolve the layer's shear round trip 2H/c_s."""
+    if t.size < 2:
+        return Sampling(math.nan, True)
+    dt_out = float(np.median(np.diff(t)))
+    frames = 2.0 * H / (c_s * dt_out)
+    return Sampling(frames, bool(frames < MIN_FRAMES_PER_ROUND_TRIP or t.size < DEFAULT_MIN_POINTS))
+
+
+def non_physical_reason(run: RunData, max_opening: float) -> str | None:
+    """Why the state of a run is not physical ("non_finite: ...", "opening_above_H"), else None.
+
+    max_opening (m): the largest opening over the measured (finite) part of the run.
+    """
+    if run.non_finite:
+        return "non_finite: " + ", ".join(run.non_finite)
+    H = run.attr("H")
+    if max_opening > H:
+        return f"opening_above_H: max opening {max_opening:.6g} m > H = {H:g} m"
+    return None
+
+
+def _first_bad(t: np.ndarray, arrays: list[np.ndarray]) -> float:
+    """First time (s) at which one of the arrays (first axis = time) holds inf or a NaN; inf if none."""
+    bad = np.zeros(t.size, dtype=bool)
+    for data in arrays:
+        rows = ~np.isfinite(data)
+        bad |= rows.reshape(t.size, -1).any(axis=1)
+    return float(t[np.argmax(bad)]) if bad.any() else math.inf
+
+
+def finite_part(run: RunData) -> RunData:
+    """The run up to (excluding) the first time at which any interface field or global series is
+    non-finite (T/N is NaN where N = 0 by definition: it does not count); the run itself when all
+    is finite. InputError when nothing finite is left to measure."""
+    if not run.non_finite:
+        return run
+    fields, series = run.interface, run.global_series
+    names = [n for n in InterfaceFields.__dataclass_fields__ if n not in ("x", "t")]
+    t_bad = _first_bad(fields.t, [getattr(fields, n) for n in names])
+    others = [getattr(series, n) for n in GlobalSeries.__dataclass_fields__ if n not in ("t", "T_over_N")]
+    ratio = series.T_over_N
+    t_bad = min(t_bad, _first_bad(series.t, others + [np.where(np.isnan(ratio), 0.0, ratio)]))
+    keep_out, keep_step = fields.t < t_bad, series.t < t_bad
+    if not keep_out.any() or np.count_nonzero(keep_step) < 2:
+        raise InputError(f"{run.path}: non-finite values from t = {t_bad:g} s leave nothing to "
+                         f"measure ({', '.join(run.non_finite)})")
+    interface = replace(fields, **{n: getattr(fields, n)[keep_out] for n in ("t", *names)})
+    global_series = GlobalSeries(**{n: getattr(series, n)[keep_step]
+                                    for n in GlobalSeries.__dataclass_fields__})
+    return replace(run, interface=interface, global_series=global_series)
