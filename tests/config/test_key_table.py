@@ -6,6 +6,7 @@ Self-contained: the solver is $SLIDEWAVE_BIN or <repo>/build/slidewave (missing:
 """
 
 import json
+import math
 import os
 import subprocess
 from pathlib import Path
