@@ -10,15 +10,12 @@ checksum failure was reported as "No such file or directory".
 import json
 import os
 import subprocess
-import sys
-from pathlib import Path
 
 import h5py
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import solver_or_skip  # noqa: E402
-from test_kill_resume import assert_same_datasets  # noqa: E402
+from solver_runs import solver_or_skip
+from test_kill_resume import assert_same_datasets
 
 # H/16, 6455 steps (about a second); stopped at step 3000 by the test hook (docs/contracts.md section 2).
 CONFIG = {"mesh": {"elements_per_H": 16}, "time": {"t_end": 300.0, "dt_times_cs": 0.03},

@@ -10,17 +10,13 @@ the setup was acted on only after it, and a kill there left an unreadable 96-byt
 """
 
 import json
-import os
 import resource
 import subprocess
-import sys
 import time
-from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import solver_or_skip  # noqa: E402
+from solver_runs import solver_or_skip
 
 GIB = 1024 ** 3
 

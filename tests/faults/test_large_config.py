@@ -9,17 +9,14 @@ No such file or directory").
 import json
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import h5py
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "tests" / "support"))
-from analysis.io import load_run  # noqa: E402
-from solver_runs import solver_or_skip  # noqa: E402
+from analysis.core.io import load_run
+from solver_runs import solver_or_skip
 
 BASE = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0}, "output": {"progress": "never"}}
 

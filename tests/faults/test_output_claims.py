@@ -11,15 +11,12 @@ was deleted, and every "RUN.h5.tmp.*" file was removed by a glob.
 import json
 import os
 import subprocess
-import sys
 import time
-from pathlib import Path
 
 import h5py
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-from solver_runs import solver_or_skip  # noqa: E402
+from solver_runs import solver_or_skip
 
 TINY = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0}, "output": {"progress": "never"}}
 # A few seconds of stepping, so that a second run starts while the first one writes.

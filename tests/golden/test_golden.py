@@ -8,17 +8,13 @@ Runs the solver binary (build/slidewave, or $SLIDEWAVE_BIN) in temporary folders
 import re
 import signal
 import subprocess
-import sys
 import time
-from pathlib import Path
 
 import h5py
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "support"))
-import golden  # noqa: E402
-from solver_runs import solver_or_skip  # noqa: E402
+import golden
+from solver_runs import solver_or_skip
 
 BLESSED = golden.load()["runs"]
 RESUMED = "paper_snapshots"  # the config run with --threads 2 and interrupted/resumed

@@ -5,12 +5,10 @@ synthetic run (no solver run)."""
 
 import shutil
 import subprocess
-import sys
 
 from .conftest import REPO, job_counts, snakemake
 
-sys.path.insert(0, str(REPO / "tests" / "analysis"))
-from synthetic_run import paper_case, write_run  # noqa: E402
+from synthetic_run import paper_case, write_run
 
 
 def copy_checkout(target):
