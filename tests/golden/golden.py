@@ -37,6 +37,7 @@ N_SAMPLES = 8
 EXCLUDED = {
     "/@call": "the command line: holds the paths of this run",
     "/@created_utc": "the creation time",
+    "/@run_id": "a random id unique to each run (it names the run's temporary files)",
     "/@git_commit": "the commit of the build (with -dirty): equal results come from many commits",
     "/@slidewave_version": "a release label, not a result",
     "/setup@config_input": "the verbatim input file; its resolved form, /@config, is digested",
