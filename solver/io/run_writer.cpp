@@ -208,6 +208,7 @@ void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mes
     const hsize_t n_below = substrate_mesh.coordinates.size() / 2;
     if (!files_->substrate_snapshots.valid()) {
       files_->substrate_snapshots = h5::group_create(files_->file, "substrate_snapshots", path_);
+      outline_.substrate_snapshot_mesh = substrate_mesh;
       write_fixed(files_->substrate_snapshots, "coordinates", substrate_mesh.coordinates, n_below, 2,
                   {"m", "node coordinates of the substrate's unwrapped mesh (y <= 0, the interface at y = 0)"}, true,
                   path_);
