@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "contact/delassus.hpp"
+#include "fem/quad4.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "model/substrate.hpp"
@@ -35,6 +36,27 @@ TEST(Substrate, PairOperatorIsTheMirroredSum) {
                 .cwiseAbs()
                 .maxCoeff(),
             0.0);
+}
+
+// The mirroring's premise: the element matrices are invariant under the reflection y -> h - y of the square
+// (nodes 1 <-> 4, 2 <-> 3, u_y -> -u_y), for every integration and both masses, to round-off. So the
+// substrate in its mirrored frame has the layer's element matrices (model/substrate.hpp).
+TEST(Substrate, ElementMatricesAreInvariantUnderTheReflection) {
+  Eigen::Matrix<double, 8, 8> T = Eigen::Matrix<double, 8, 8>::Zero();
+  const int image[4] = {3, 2, 1, 0};
+  for (int a = 0; a < 4; ++a) {
+    T(2 * a, 2 * image[a]) = 1;
+    T(2 * a + 1, 2 * image[a] + 1) = -1;
+  }
+  for (const Integration integration : testing::kAllIntegrations) {
+    const auto K = quad4_stiffness(3e3, 0.3, 0.7, integration);
+    EXPECT_LT((T.transpose() * K * T - K).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff())
+        << testing::integration_name(integration);
+  }
+  for (const MassKind kind : {MassKind::consistent, MassKind::lumped}) {
+    const auto M = quad4_mass(2e3, 0.7, kind);
+    EXPECT_LT((T.transpose() * M * T - M).cwiseAbs().maxCoeff(), 1e-14 * M.cwiseAbs().maxCoeff());
+  }
 }
 
 // The substrate body: the layer's n_x and h, H_s / h rows, its own material, the layer's time step.
