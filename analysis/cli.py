@@ -189,7 +189,7 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     p = commands.add_parser("measure", help="one run.h5 -> metrics.json")
-    p.add_argument("run", type=Path, help="run file (the format versions analysis/core/io.py reads)")
+    p.add_argument("run", type=Path, help="run file (format_version 2, or 3 with a substrate)")
     p.add_argument("-o", "--output", type=Path, required=True, help="metrics JSON to write")
     p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD_REL,
                    help="slip-velocity threshold relative to V0 (default %(default)g)")

@@ -7,6 +7,9 @@
 // A timed program (not a test). Usage: slidewave_bench_step [--n 32 64 128] [--lambda 2 4 6] [--t-end 1300]
 //                                      [--nu 0.2] [--f 1.5] [--solver spectral|cholmod]
 //                                      [--threads N] [--stream FOLDER [--checkpoint-interval S]]
+//                                      [--substrate E_RATIO]
+// --substrate adds a deformable substrate of the layer's size (H_s = H, its nu and rho, E_s = E_RATIO E;
+// docs/substrate.md): the pair has no stick stage, every step is the pair's.
 // --threads sets numerics.threads (the thread team of one spectral solve; CHOLMOD's BLAS is left as the
 // process starts). sweeps/step is the mean count of Gauss–Seidel sweeps per step (0 on a step solved by the
 // exact all-stick solution, contact/all_stick.hpp).
@@ -109,6 +112,7 @@ int main(int argc, char** argv) {
   std::string stream_folder;
   double checkpoint_interval = 300;
   int threads = 1;
+  double substrate_ratio = 0;  // 0: the rigid flat
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--n") {
@@ -123,6 +127,8 @@ int main(int argc, char** argv) {
       f = std::atof(argv[++i]);
     } else if (a == "--stream" && i + 1 < argc) {
       stream_folder = argv[++i];
+    } else if (a == "--substrate" && i + 1 < argc && std::atof(argv[i + 1]) > 0) {
+      substrate_ratio = std::atof(argv[++i]);
     } else if (a == "--threads" && i + 1 < argc && std::atoi(argv[i + 1]) >= 1) {
       threads = std::atoi(argv[++i]);
     } else if (a == "--checkpoint-interval" && i + 1 < argc) {
@@ -131,7 +137,7 @@ int main(int argc, char** argv) {
                (solver_name = argv[++i], solver_name == "spectral" || solver_name == "cholmod")) {
       solver = solver_name == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::spectral;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]] [--substrate E_RATIO]\n", argv[0]);
       return 2;
     }
   }
@@ -155,6 +161,9 @@ int main(int argc, char** argv) {
     config.time.t_end = t_end;
     config.numerics.linear_solver = solver;
     config.numerics.threads = threads;
+    if (substrate_ratio > 0)
+      config.substrate = slidewave::SubstrateConfig{substrate_ratio * config.material.E, nu, config.material.rho,
+                                                    config.geometry.H};
     const slidewave::LayerModel model(config);
     config.output.checkpoint_interval = checkpoint_interval;
     slidewave::StepProfile profile;

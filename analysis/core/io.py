@@ -32,10 +32,15 @@ import numpy as np
 
 from analysis.core.errors import InputError
 
-__all__ = ["FORMAT_VERSION", "GlobalSeries", "InputError", "InterfaceFields", "RunData", "load_run"]
+__all__ = ["FORMAT_VERSION", "FORMAT_VERSIONS", "SUBSTRATE_FORMAT_VERSION", "GlobalSeries", "InputError", "InterfaceFields", "RunData", "load_run"]
 
-#: The one run-file format this reader knows.
+#: The run-file format of a rigid-flat run.
 FORMAT_VERSION = 2
+#: The format of a run with a deformable substrate (docs/substrate.md): format 2, with relative interface
+#: fields (layer minus substrate), /substrate_snapshots and the substrate's constants in /setup.
+SUBSTRATE_FORMAT_VERSION = 3
+#: Every format this reader knows.
+FORMAT_VERSIONS = (FORMAT_VERSION, SUBSTRATE_FORMAT_VERSION)
 
 #: Root attributes (provenance and outcome) besides format_version.
 ROOT_ATTRIBUTES = ("creator", "slidewave_version", "git_commit", "call", "created_utc", "config",
@@ -44,6 +49,9 @@ _NUMERIC_ROOT = ("complete", "n_steps_done")
 #: Derived constants of the solver, attributes of `/setup` (SI units).
 SETUP_CONSTANTS = ("E", "nu", "rho", "H", "lambda", "h", "f", "c_s", "c_l", "p0", "V0", "dt",
                    "t_end", "hht_alpha", "t_onset_estimate", "u_x_preshear", "opening_threshold")
+#: `/setup` attributes of format 3 only: the substrate's constants (SI units; the return time 2 H_s / c_l,s).
+SUBSTRATE_CONSTANTS = ("substrate_E", "substrate_nu", "substrate_rho", "substrate_H", "substrate_c_s",
+                       "substrate_c_l", "substrate_return_time")
 _INTERFACE_FIELDS = ("slip_velocity", "slip", "opening", "normal_traction", "tangential_traction",
                      "state")
 _GLOBAL_SERIES = ("t", "T", "N", "T_over_N", "energy_kinetic", "energy_elastic", "work_external",
@@ -104,6 +112,11 @@ class RunData:
     interface: InterfaceFields
     global_series: GlobalSeries
     non_finite: tuple[str, ...] = ()
+
+    @property
+    def has_substrate(self) -> bool:
+        """A deformable substrate below the interface (format 3): interface fields are then relative."""
+        return int(self.attrs["format_version"]) == SUBSTRATE_FORMAT_VERSION
 
     def attr(self, name: str) -> float:
         """A derived constant of `/setup` (e.g. "c_s") or a numeric root attribute, as float."""
@@ -229,9 +242,9 @@ def _check_version(path: str, attrs: Any) -> None:
         raise _fail(path, "format_version 1 is an older run-file format (derived constants as "
                           "root attributes) that this reader no longer reads: rerun the solver "
                           "(slidewave run) to write format_version 2")
-    if version != FORMAT_VERSION:
+    if version not in FORMAT_VERSIONS:
         raise _fail(path, f"format_version {version} is not supported: this reader knows only "
-                          f"format_version {FORMAT_VERSION}")
+                          f"format_version {' and '.join(str(v) for v in FORMAT_VERSIONS)}")
 
 
 def _read_attributes(file: Any, path: str) -> tuple[dict[str, Any], dict[str, float], str, dict]:
@@ -248,10 +261,12 @@ def _read_attributes(file: Any, path: str) -> tuple[dict[str, Any], dict[str, fl
     if "setup" not in file or hasattr(file["setup"], "shape"):
         raise _fail(path, "group '/setup' is missing (malformed run file)")
     setup_attrs = {name: _decode(value) for name, value in file["setup"].attrs.items()}
-    missing = [name for name in SETUP_CONSTANTS + ("config_input",) if name not in setup_attrs]
+    constants = SETUP_CONSTANTS + (
+        SUBSTRATE_CONSTANTS if _decode(file.attrs["format_version"]) == SUBSTRATE_FORMAT_VERSION else ())
+    missing = [name for name in constants + ("config_input",) if name not in setup_attrs]
     if missing:
         raise _fail(path, f"/setup attribute(s) missing: {', '.join(missing)}")
-    for name in SETUP_CONSTANTS:
+    for name in constants:
         if not _is_number(setup_attrs[name]):
             raise _fail(path, f"/setup attribute '{name}' = {setup_attrs[name]!r} is not a finite number")
     config_input = setup_attrs["config_input"]
@@ -263,7 +278,7 @@ def _read_attributes(file: Any, path: str) -> tuple[dict[str, Any], dict[str, fl
         raise _fail(path, f"root attribute 'config' is not valid JSON ({err})") from None
     if not isinstance(config, dict):
         raise _fail(path, "root attribute 'config' is not a JSON object")
-    setup = {name: float(setup_attrs[name]) for name in SETUP_CONSTANTS}
+    setup = {name: float(setup_attrs[name]) for name in constants}
     return attrs, setup, config_input, config
 
 
@@ -273,7 +288,7 @@ def load_run(path: str | Path) -> RunData:
     Parameters
     ----------
     path
-        A `run.h5` written by `slidewave run` (format_version 2).
+        A `run.h5` written by `slidewave run` (format_version 2, or 3 with a substrate).
 
     Returns
     -------

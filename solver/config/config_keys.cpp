@@ -32,8 +32,8 @@ ConfigKey number(std::string group, std::string name, std::optional<Bound> lower
 
 template <typename Field>
 ConfigKey optional_number(std::string group, std::string name, std::optional<Bound> lower, std::string unit,
-                          std::string description, Field field) {
-  ConfigKey k{group, name, KeyKind::optional_number, lower, unbounded, {}, {}, unit, description, {}, {}};
+                          std::string description, Field field, std::optional<Bound> upper = unbounded) {
+  ConfigKey k{group, name, KeyKind::optional_number, lower, upper, {}, {}, unit, description, {}, {}};
   k.get = [field](const RunConfig& c) { return field(c) ? json(*field(c)) : json(nullptr); };
   k.set = [field](RunConfig& c, const json& v) {
     if (v.is_null())
@@ -222,6 +222,20 @@ std::vector<ConfigKey> make_table() {
              "docs/energy-balance.md; a few dot products a step), which the balance residual must equal; "
              "`none`: not written",
              [](auto& c) -> auto& { return c.output.energy_decomposition; }),
+
+      // The deformable substrate (docs/substrate.md): all four keys or none (none: the rigid flat, the paper).
+      optional_number("substrate", "E", open(0), "Pa",
+                      "substrate Young's modulus; null in every `substrate` key: the rigid flat of the paper. The "
+                      "four keys go together (docs/substrate.md)",
+                      [](auto& c) -> auto& { return c.substrate.E; }),
+      optional_number("substrate", "nu", closed(0), "", "substrate Poisson's ratio",
+                      [](auto& c) -> auto& { return c.substrate.nu; }, open(0.5)),
+      optional_number("substrate", "rho", open(0), "kg/m^3", "substrate density",
+                      [](auto& c) -> auto& { return c.substrate.rho; }),
+      optional_number("substrate", "H", open(0), "m",
+                      "substrate thickness H_s, a whole number in [2, 65536] of elements of the layer's size "
+                      "h = geometry.H / mesh.elements_per_H; its bottom is held (u = 0)",
+                      [](auto& c) -> auto& { return c.substrate.H; }),
   };
 }
 

@@ -1,6 +1,7 @@
 // The key table rendered for people (the key section of docs/contracts.md) and for tools
 // (`slidewave keys --json`, which tests use to check study/config.schema.yaml).
 #include "config/config_keys.hpp"
+#include "config/run_config.hpp"
 
 namespace slidewave {
 namespace {
@@ -42,9 +43,13 @@ json config_keys_json() {
 }
 
 std::string config_keys_markdown() {
-  // The defaults as one JSON object, a line per group, in the table's order.
+  // The defaults as one JSON object, a line per group, in the table's order (the groups of the default
+  // resolved configuration: `substrate` is absent by default, docs/substrate.md).
   std::string block = "```json\n{\n";
-  const auto& groups = config_groups();
+  const json defaults = RunConfig{}.to_json();
+  std::vector<std::string> groups;
+  for (const auto& g : config_groups())
+    if (defaults.contains(g)) groups.push_back(g);
   for (size_t g = 0; g < groups.size(); ++g) {
     std::string line = "  \"" + groups[g] + "\":";
     line += std::string(line.size() < 18 ? 18 - line.size() : 1, ' ') + "{";

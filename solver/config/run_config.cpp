@@ -79,6 +79,27 @@ RunConfig parse_run_config(const nlohmann::json& input) {
       n_x > std::numeric_limits<int>::max())
     problems.push_back("geometry.lambda_over_H: " + std::to_string(c.geometry.lambda_over_H) +
                        " times mesh.elements_per_H must be an integer >= 3");
+  // The substrate: all four keys or none; its thickness a whole number of the layer's elements.
+  const SubstrateConfig& s = c.substrate;
+  const std::pair<const char*, bool> given[] = {{"E", s.E.has_value()}, {"nu", s.nu.has_value()},
+                                                {"rho", s.rho.has_value()}, {"H", s.H.has_value()}};
+  int n_given = 0;
+  for (const auto& g : given) n_given += g.second;
+  if (n_given > 0 && n_given < 4) {
+    for (const auto& g : given)
+      if (!g.second)
+        for (const auto& key : config_keys())
+          if (key.group == "substrate" && key.name == g.first)
+            problems.push_back(key.path() + ": missing; the substrate needs E, nu, rho and H together (or none "
+                               "of them: the rigid flat); allowed " + key.allowed().substr(8));  // not "null or "
+  } else if (n_given == 4 && problems.empty()) {
+    const double n_y = *s.H * c.mesh.elements_per_H / c.geometry.H;
+    if (std::fabs(n_y - std::round(n_y)) > 1e-9 * n_y || std::round(n_y) < 2 || std::round(n_y) > 65536)
+      problems.push_back("substrate.H: " + short_number(*s.H) + " m is " + short_number(n_y) +
+                         " elements of size h = geometry.H / mesh.elements_per_H = " +
+                         short_number(c.geometry.H / c.mesh.elements_per_H) +
+                         " m; allowed a whole number of elements in [2, 65536]");
+  }
   // The step count, once every value it depends on is valid (a count from a rejected value would mislead).
   if (problems.empty()) {
     const DerivedConstants d = c.derived();
@@ -137,8 +158,17 @@ DerivedConstants RunConfig::derived() const {
 
 nlohmann::json RunConfig::to_json() const {
   nlohmann::json j = nlohmann::json::object();
-  for (const auto& key : config_keys()) j[key.group][key.name] = key.get(*this);
+  for (const auto& key : config_keys()) {
+    // No substrate (the rigid flat): the group is left out, so that such a run's resolved configuration is
+    // what it was before the group existed.
+    if (key.group == "substrate" && !substrate.present()) continue;
+    j[key.group][key.name] = key.get(*this);
+  }
   return j;
+}
+
+int substrate_rows(const RunConfig& c) {
+  return static_cast<int>(std::lround(*c.substrate.H * c.mesh.elements_per_H / c.geometry.H));
 }
 
 }  // namespace slidewave

@@ -53,6 +53,13 @@ struct NumericsConfig {
   LinearSolverKind linear_solver = LinearSolverKind::spectral;
   int threads = 1;  ///< threads of one run: spectral solves, or CHOLMOD (`run --threads` overrides it)
 };
+/// The deformable substrate below the interface (docs/substrate.md, model/substrate.hpp): all four keys
+/// or none (parse_run_config checks that); none is the paper's rigid flat.
+struct SubstrateConfig {
+  std::optional<double> E, nu, rho;  ///< Young's modulus (Pa), Poisson's ratio, density (kg/m^3)
+  std::optional<double> H;           ///< thickness H_s (m), a whole number of the layer's elements
+  bool present() const { return E.has_value(); }
+};
 struct OutputConfig {
   int interface_stride = 4;
   std::vector<double> snapshot_times;
@@ -85,10 +92,14 @@ struct RunConfig {
   PerturbationConfig perturbation;
   NumericsConfig numerics;
   OutputConfig output;
+  SubstrateConfig substrate;
 
   DerivedConstants derived() const;
   nlohmann::json to_json() const;  ///< the resolved configuration, every key explicit
 };
+
+/// Element rows of the substrate, H_s / h (precondition: config.substrate.present(), validated).
+int substrate_rows(const RunConfig& config);
 
 /// Thrown with every problem found, one per line ("key: value ... allowed ...").
 class ConfigError : public std::runtime_error {

@@ -4,6 +4,7 @@
 
 #include "git_version.hpp"
 #include "io/hdf5_support.hpp"
+#include "model/substrate.hpp"
 
 namespace slidewave {
 namespace {
@@ -20,7 +21,7 @@ std::string utc_now() {
 void write_run_header(hid_t file, const std::string& path, const RunConfig& config, const Provenance& provenance) {
   using namespace h5;
   const DerivedConstants d = config.derived();
-  write_int_attribute(file, "format_version", kRunFormatVersion, path);
+  write_int_attribute(file, "format_version", run_format_version(config), path);
   write_string_attribute(file, "creator", "slidewave", path);
   write_string_attribute(file, "slidewave_version", kVersion, path);
   write_string_attribute(file, "git_commit", kGitCommit, path);
@@ -36,6 +37,15 @@ void write_run_header(hid_t file, const std::string& path, const RunConfig& conf
       {"V0", d.V0}, {"dt", d.dt}, {"t_end", config.time.t_end}, {"hht_alpha", config.time.hht_alpha},
       {"t_onset_estimate", d.t_onset_estimate}};
   for (const auto& c : constants) write_double_attribute(setup, c.name, c.value, path);
+  if (config.substrate.present()) {  // format 3 (docs/substrate.md)
+    const RunConfig body = substrate_body_config(config);
+    const DerivedConstants ds = body.derived();
+    const struct { const char* name; double value; } substrate[] = {
+        {"substrate_E", body.material.E}, {"substrate_nu", body.material.nu}, {"substrate_rho", body.material.rho},
+        {"substrate_H", ds.H}, {"substrate_c_s", ds.c_s}, {"substrate_c_l", ds.c_l},
+        {"substrate_return_time", 2 * ds.H / ds.c_l}};
+    for (const auto& c : substrate) write_double_attribute(setup, c.name, c.value, path);
+  }
 }
 
 void write_run_outcome(hid_t file, const std::string& path, const RunRecord& record) {

@@ -1,5 +1,5 @@
 #pragma once
-// What run.h5 (format_version 2, docs/contracts.md section 2) says about itself: the header written
+// What run.h5 (format_version 2, or 3 with a substrate: docs/contracts.md section 2) says about itself: the header written
 // when the file is created (provenance and resolved configuration at the root; /setup: the verbatim
 // input and every derived constant) and the outcome (root: complete, end_reason, n_steps_done,
 // t_first_opening; /setup: u_x_preshear and opening_threshold, known after the preload), rewritten
@@ -15,6 +15,14 @@
 namespace slidewave {
 
 inline constexpr int kRunFormatVersion = 2;
+/// A run with a deformable substrate (docs/substrate.md): relative interface fields, /substrate_snapshots and
+/// the substrate's constants in /setup. A rigid-flat run keeps writing kRunFormatVersion (its file unchanged).
+inline constexpr int kRunFormatVersionSubstrate = 3;
+
+/// The format_version a run of `config` writes.
+inline int run_format_version(const RunConfig& config) {
+  return config.substrate.present() ? kRunFormatVersionSubstrate : kRunFormatVersion;
+}
 
 struct Provenance {
   std::string call;                   ///< the command line

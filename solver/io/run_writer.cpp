@@ -122,9 +122,10 @@ struct RunWriter::Series {
 };
 
 struct RunWriter::Files {
-  Handle file, interface, global, snapshots;
+  Handle file, interface, global, snapshots, substrate_snapshots;
   /// Closes the groups, then the file (so that the file really closes); returns the file's status.
   herr_t close() {
+    substrate_snapshots.close();
     snapshots.close();
     interface.close();
     global.close();
@@ -182,7 +183,8 @@ void RunWriter::ensure_layout(const RunRecord& record) {
       Series::create<int>(files_->global, "contact_iterations", 0, kIterationsText, path_);
 }
 
-void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh) {
+void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh, const Snapshot* substrate,
+                               const SnapshotMesh& substrate_mesh) {
   const hsize_t n_nodes = mesh.coordinates.size() / 2;
   if (!files_->snapshots.valid()) {
     files_->snapshots = h5::group_create(files_->file, "snapshots", path_);
@@ -202,6 +204,28 @@ void RunWriter::write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mes
   position_.digests[base + "displacement"] =
       digest_update(kFnvOffset, snapshot.displacement.data(), snapshot.displacement.size());
   position_.digests[base + "velocity"] = digest_update(kFnvOffset, snapshot.velocity.data(), snapshot.velocity.size());
+  if (substrate) {  // the same snapshot of the substrate (format 3, docs/substrate.md)
+    const hsize_t n_below = substrate_mesh.coordinates.size() / 2;
+    if (!files_->substrate_snapshots.valid()) {
+      files_->substrate_snapshots = h5::group_create(files_->file, "substrate_snapshots", path_);
+      outline_.substrate_snapshot_mesh = substrate_mesh;
+      write_fixed(files_->substrate_snapshots, "coordinates", substrate_mesh.coordinates, n_below, 2,
+                  {"m", "node coordinates of the substrate's unwrapped mesh (y <= 0, the interface at y = 0)"}, true,
+                  path_);
+      write_fixed(files_->substrate_snapshots, "connectivity", substrate_mesh.connectivity,
+                  substrate_mesh.connectivity.size() / 4, 4,
+                  {"1", "quadrilateral nodes (counter-clockwise in the mirrored frame y' = -y)"}, true, path_);
+    }
+    const Handle below = h5::group_create(files_->substrate_snapshots, id, path_);
+    h5::write_double_attribute(below, "t", substrate->t, path_);
+    write_fixed(below, "displacement", substrate->displacement, n_below, 2, {"m", "nodal displacement"}, true, path_);
+    write_fixed(below, "velocity", substrate->velocity, n_below, 2, {"m/s", "nodal velocity"}, true, path_);
+    const std::string base_below = "/substrate_snapshots/" + id + "/";
+    position_.digests[base_below + "displacement"] =
+        digest_update(kFnvOffset, substrate->displacement.data(), substrate->displacement.size());
+    position_.digests[base_below + "velocity"] =
+        digest_update(kFnvOffset, substrate->velocity.data(), substrate->velocity.size());
+  }
   outline_.snapshots.push_back(Snapshot{snapshot.t, {}, {}});
   ++position_.n_snapshots;
 }
@@ -236,8 +260,12 @@ void RunWriter::drain(RunRecord& record) {
                                                 "/global/contact_iterations");
   g.contact_iterations.clear();
 
-  for (const auto& snapshot : record.snapshots) write_snapshot(snapshot, record.snapshot_mesh);
+  for (std::size_t k = 0; k < record.snapshots.size(); ++k)
+    write_snapshot(record.snapshots[k], record.snapshot_mesh,
+                   k < record.substrate_snapshots.size() ? &record.substrate_snapshots[k] : nullptr,
+                   record.substrate_snapshot_mesh);
   record.snapshots.clear();
+  record.substrate_snapshots.clear();
 
   position_.n_global_rows += n_global;
   position_.n_interface_rows += n_interface;

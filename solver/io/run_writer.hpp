@@ -95,7 +95,9 @@ class RunWriter {
   struct Series;
   void ensure_layout(const RunRecord& record);
   void check_own_file() const;
-  void write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh);
+  /// substrate: the same snapshot of the substrate (null on a rigid flat), on substrate_mesh.
+  void write_snapshot(const Snapshot& snapshot, const SnapshotMesh& mesh, const Snapshot* substrate,
+                      const SnapshotMesh& substrate_mesh);
 
   std::string path_;
   std::string run_id_;  ///< Provenance::run_id: written as the root attribute run_id, names the staged sidecars

@@ -63,9 +63,17 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
       read_rows("/interface/state", block.interface.state.data.data(), first, n, n_c);
       drain(block);
     }
+    // A run with a substrate (format 3) has each snapshot of the substrate beside the layer's.
+    const bool substrate = position.n_snapshots > 0 && H5Lexists(earlier, "substrate_snapshots", H5P_DEFAULT) > 0;
     if (position.n_snapshots > 0) {
       block.snapshot_mesh.coordinates = h5::read_dataset<double>(earlier, "/snapshots/coordinates", earlier_path);
       block.snapshot_mesh.connectivity = h5::read_dataset<std::int64_t>(earlier, "/snapshots/connectivity", earlier_path);
+    }
+    if (substrate) {
+      block.substrate_snapshot_mesh.coordinates =
+          h5::read_dataset<double>(earlier, "/substrate_snapshots/coordinates", earlier_path);
+      block.substrate_snapshot_mesh.connectivity =
+          h5::read_dataset<std::int64_t>(earlier, "/substrate_snapshots/connectivity", earlier_path);
     }
     for (std::int64_t k = 0; k < position.n_snapshots; ++k) {
       const std::string group = "/snapshots/" + snapshot_id(static_cast<std::size_t>(k));
@@ -74,6 +82,13 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
                         h5::read_dataset<double>(one, "displacement", earlier_path),
                         h5::read_dataset<double>(one, "velocity", earlier_path)};
       block.snapshots.push_back(std::move(snapshot));
+      if (substrate) {
+        const Handle below = h5::group_open(earlier, "/substrate_snapshots/" + snapshot_id(static_cast<std::size_t>(k)),
+                                            earlier_path);
+        block.substrate_snapshots.push_back(Snapshot{h5::read_double_attribute(below, "t", earlier_path),
+                                                     h5::read_dataset<double>(below, "displacement", earlier_path),
+                                                     h5::read_dataset<double>(below, "velocity", earlier_path)});
+      }
       drain(block);
     }
   } catch (const IoError& e) {

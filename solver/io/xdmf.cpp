@@ -4,6 +4,7 @@
 #include <fstream>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include "io/run_id.hpp"
 #include "io/run_layout.hpp"
@@ -81,21 +82,42 @@ std::string interface_xdmf_path_for(const std::string& h5_path) {
   return without_extension(h5_path) + ".interface.xdmf";
 }
 
+/// The mesh and fields of one body at snapshot `id`, under `group` (/snapshots or /substrate_snapshots).
+void write_body(std::ofstream& out, const std::string& h5_name, const SnapshotMesh& mesh, const std::string& group,
+                const std::string& id) {
+  const std::string n_nodes = std::to_string(mesh.coordinates.size() / 2);
+  const std::string n_elements = std::to_string(mesh.connectivity.size() / 4);
+  out << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n     "
+      << hdf_item(n_elements + " 4", "Int", 8, h5_name + ":" + group + "/connectivity") << "\n    </Topology>\n"
+      << "    <Geometry GeometryType=\"XY\">\n     "
+      << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":" + group + "/coordinates") << "\n    </Geometry>\n";
+  for (const char* field : {"displacement", "velocity"})
+    out << "    <Attribute Name=\"" << field << "\" AttributeType=\"Vector\" Center=\"Node\">\n     "
+        << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":" + group + "/" + id + "/" + field)
+        << "\n    </Attribute>\n";
+}
+
 void write_bulk_xdmf(const std::string& path, const std::string& h5_name, const RunRecord& rec) {
-  const std::string n_nodes = std::to_string(rec.snapshot_mesh.coordinates.size() / 2);
-  const std::string n_elements = std::to_string(rec.snapshot_mesh.connectivity.size() / 4);
+  // With a substrate (docs/substrate.md) each time is a spatial collection of the layer and the substrate.
+  const bool substrate = !rec.substrate_snapshot_mesh.coordinates.empty();
   std::ofstream out = begin_temporal_collection(path, "layer");
   for (size_t s = 0; s < rec.snapshots.size(); ++s) {
     const std::string id = run_layout::snapshot_id(s);
-    begin_time_step(out, "snapshot", 4, s, rec.snapshots[s].t);
-    out << "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_elements << "\">\n     "
-        << hdf_item(n_elements + " 4", "Int", 8, h5_name + ":/snapshots/connectivity") << "\n    </Topology>\n"
-        << "    <Geometry GeometryType=\"XY\">\n     "
-        << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":/snapshots/coordinates") << "\n    </Geometry>\n";
-    for (const char* field : {"displacement", "velocity"})
-      out << "    <Attribute Name=\"" << field << "\" AttributeType=\"Vector\" Center=\"Node\">\n     "
-          << hdf_item(n_nodes + " 2", "Float", 8, h5_name + ":/snapshots/" + id + "/" + field)
-          << "\n    </Attribute>\n";
+    if (!substrate) {
+      begin_time_step(out, "snapshot", 4, s, rec.snapshots[s].t);
+      write_body(out, h5_name, rec.snapshot_mesh, "/snapshots", id);
+      out << "   </Grid>\n";
+      continue;
+    }
+    out << "   <Grid Name=\"snapshot_" << id << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+        << "    <Time Value=\"" << rec.snapshots[s].t << "\"/>\n";
+    for (const auto& [name, mesh, group] :
+         {std::tuple{"layer", &rec.snapshot_mesh, "/snapshots"},
+          std::tuple{"substrate", &rec.substrate_snapshot_mesh, "/substrate_snapshots"}}) {
+      out << "   <Grid Name=\"" << name << "_" << id << "\" GridType=\"Uniform\">\n";
+      write_body(out, h5_name, *mesh, group, id);
+      out << "   </Grid>\n";
+    }
     out << "   </Grid>\n";
   }
   end_temporal_collection(out, path);

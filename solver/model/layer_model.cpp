@@ -10,6 +10,7 @@
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/two_solve_split.hpp"
+#include "model/substrate.hpp"
 
 namespace slidewave {
 
@@ -26,6 +27,7 @@ LayerModel::LayerModel(const RunConfig& c)
   K_fd = K.topRightCorner(n_free, n_top);
   M_fd = M.topRightCorner(n_free, n_top);
   M_top_rows = M.bottomRows(n_top);
+  if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {
@@ -61,7 +63,21 @@ PreloadState solve_preload(const LayerModel& model) {
   const auto& c = model.config;
   const int n_c = model.n_contact_dofs;
   const auto K_static = model.factorize(model.K_ff);
-  const Eigen::MatrixXd W = delassus_operator_periodic(*K_static, model.mesh.n_contact());
+  // With a substrate: the pair's static Delassus operator W_L + S W_S S (model/substrate.hpp).
+  const LayerModel* sub = model.substrate.get();
+  const auto K_static_sub = sub ? sub->factorize(sub->K_ff) : nullptr;
+  const Eigen::MatrixXd W =
+      sub ? pair_delassus(delassus_operator_periodic(*K_static, model.mesh.n_contact()),
+                          delassus_operator_periodic(*K_static_sub, sub->mesh.n_contact()))
+          : delassus_operator_periodic(*K_static, model.mesh.n_contact());
+  // The substrate's static displacement (all DOFs, its held bottom at 0) under -r, i.e. S r in its frame.
+  const auto substrate_displacement = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(sub->n_free), u = Eigen::VectorXd::Zero(sub->n_free + sub->n_top);
+    load.head(n_c) = r;
+    mirror_x_components(load);
+    u.head(sub->n_free) = K_static_sub->solve(load);
+    return u;
+  };
   GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
 
   // Contact displacements of the free (reaction-less) static response to the top displacement u_d.
@@ -98,7 +114,9 @@ PreloadState solve_preload(const LayerModel& model) {
   s.r = -W_ldlt.solve(free_contact_displacement(u_d1));
   Eigen::VectorXd u1 = solve_static(u_d1, zero_contact, s.r, s.state, s.contact_iterations);
   const Eigen::VectorXd r1 = s.r;
-  const Eigen::VectorXd u1_contact = u1.head(n_c);
+  // Stage 2's slip is measured from stage 1's relative position (the layer's own on a rigid flat).
+  const Eigen::VectorXd u1_contact =
+      sub ? relative_contact_displacement(u1, substrate_displacement(r1), n_c) : Eigen::VectorXd(u1.head(n_c));
 
   // Stage 2: while all nodes stick, the reactions are linear in the top shear U:
   // r(U) = r1 + U r_unit with W r_unit = -(free contact displacement of a unit shear). Solve for the U
@@ -110,6 +128,7 @@ PreloadState solve_preload(const LayerModel& model) {
   s.u_x_top = (target * N1 - T1) / (Tu - target * Nu);
   s.r = r1 + s.u_x_top * r_unit;  // warm start: the exact all-stick answer
   s.u = solve_static(model.top_displacement(s.u_x_top, u_y_top), u1_contact, s.r, s.state, s.contact_iterations);
+  if (sub) s.u_substrate = substrate_displacement(s.r);
   s.T = -sum_every_other(s.r, 0);
   s.N = sum_every_other(s.r, 1);
 

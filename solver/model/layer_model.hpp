@@ -27,6 +27,8 @@ struct LayerModel {
   Eigen::SparseMatrix<double> K_ff, M_ff;  ///< free-free blocks (to factorize)
   RowSparseMatrix M_ff_rows, K_fd, M_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
+  /// The deformable substrate as a layer in its mirrored frame (model/substrate.hpp); null: the rigid flat.
+  std::shared_ptr<const LayerModel> substrate;
 
   /// Factorizes a free-free matrix (K_ff, M_ff, K_eff) with the configured linear solver.
   std::unique_ptr<LinearSolver> factorize(const Eigen::SparseMatrix<double>& A) const;
@@ -40,6 +42,7 @@ struct LayerModel {
 /// Result of the quasi-static stages (1: compression, 2: shear until T/N = preshear_ratio * f).
 struct PreloadState {
   Eigen::VectorXd u;        ///< all DOFs
+  Eigen::VectorXd u_substrate;  ///< the substrate's DOFs (its mirrored frame), empty on a rigid flat
   Eigen::VectorXd r;        ///< contact reactions (2 per contact node: x, y)
   std::vector<ContactState> state;
   double u_x_top;           ///< top shear displacement of stage 2 (m)
@@ -48,7 +51,7 @@ struct PreloadState {
 };
 
 /// Solves stages 1 and 2 through the same contact law as the dynamics (slip measured from the
-/// previous stage). Throws if the final state is not all-closed, all-stick (all-closed if f = 0).
+/// previous stage); with a substrate, on the pair's static Delassus operator (docs/substrate.md). Throws if the final state is not all-closed, all-stick (all-closed if f = 0).
 PreloadState solve_preload(const LayerModel& model);
 
 }  // namespace slidewave

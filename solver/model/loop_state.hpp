@@ -14,7 +14,7 @@ namespace slidewave {
 
 /// What the recorder carries between steps.
 struct RecorderState {
-  Eigen::VectorXd u_contact_start;  ///< contact DOFs at t = 0 (slip is measured from them)
+  Eigen::VectorXd u_contact_start;  ///< contact DOFs at t = 0, relative with a substrate (slip is measured from them)
   std::size_t next_snapshot = 0;    ///< index of the next snapshot time (sorted)
   double t_first_opening = -1;      ///< time the interface first opened (-1: not yet)
 };
@@ -28,6 +28,8 @@ struct LoopState {
   FrictionState friction;             ///< the friction law's memory (empty for Coulomb)
   EnergySums energy;                  ///< the energy ledger's running sums and F_top
   RecorderState recording;
+  HHTState substrate;                 ///< the substrate's dynamics (its mirrored frame); empty on a rigid flat
+  EnergySums substrate_energy;        ///< the substrate's ledger (its contact work booked with S r)
 };
 
 }  // namespace slidewave

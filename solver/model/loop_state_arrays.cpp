@@ -25,6 +25,24 @@ void for_each_vector(State& loop, F&& visit) {
     visit("hht_Ku_f", loop.energy.hht.Ku_f);
     visit("hht_shift_f", loop.energy.hht.shift_f);
   }
+  if (loop.substrate.u.size() > 0) {  // the deformable substrate (model/substrate.hpp)
+    visit("substrate_u", loop.substrate.u);
+    visit("substrate_v", loop.substrate.v);
+    visit("substrate_acc", loop.substrate.acc);
+    visit("substrate_Ku", loop.substrate.Ku);
+    visit("substrate_Mu_f", loop.substrate.Mu_f);
+    visit("substrate_Mv_f", loop.substrate.Mv_f);
+    visit("substrate_Ma_f", loop.substrate.Ma_f);
+    visit("substrate_r", loop.substrate.r);
+    visit("substrate_F_top", loop.substrate_energy.F_top);
+    if (loop.substrate_energy.hht.on()) {
+      visit("substrate_hht_v_f", loop.substrate_energy.hht.v_f);
+      visit("substrate_hht_acc_f", loop.substrate_energy.hht.acc_f);
+      visit("substrate_hht_Ma_f", loop.substrate_energy.hht.Ma_f);
+      visit("substrate_hht_Ku_f", loop.substrate_energy.hht.Ku_f);
+      visit("substrate_hht_shift_f", loop.substrate_energy.hht.shift_f);
+    }
+  }
 }
 
 /// The array `name` of one kind (a.reals or a.integers), which must hold `size` values for this model.
@@ -52,6 +70,11 @@ StateArrays to_arrays(const LoopState& loop) {
                         loop.energy.dissipation_friction, loop.energy.work_contact_normal,
                         loop.recording.t_first_opening};
   if (loop.energy.hht.on()) a.reals["hht_terms"] = {loop.energy.hht.gamma, loop.energy.hht.beta, loop.energy.hht.shift};
+  if (loop.substrate.u.size() > 0) {
+    const EnergySums& e = loop.substrate_energy;
+    a.reals["substrate_sums"] = {e.energy_start, e.work_external, e.dissipation_friction, e.work_contact_normal,
+                                 e.hht.gamma, e.hht.beta, e.hht.shift};
+  }
   auto& contact = a.integers["contact"];
   for (const ContactState s : loop.contact) contact.push_back(static_cast<std::int64_t>(s));
   std::int64_t end_reason = -1;
@@ -80,6 +103,17 @@ void restore_from_arrays(const StateArrays& a, LoopState& loop) {
     loop.energy.hht.gamma = terms[0];
     loop.energy.hht.beta = terms[1];
     loop.energy.hht.shift = terms[2];
+  }
+  if (loop.substrate.u.size() > 0) {
+    const auto& sums = find_array(a.reals, "substrate_sums", 7);
+    EnergySums& e = loop.substrate_energy;
+    e.energy_start = sums[0];
+    e.work_external = sums[1];
+    e.dissipation_friction = sums[2];
+    e.work_contact_normal = sums[3];
+    e.hht.gamma = sums[4];
+    e.hht.beta = sums[5];
+    e.hht.shift = sums[6];
   }
   const auto& contact = find_array(a.integers, "contact", loop.contact.size());
   for (std::size_t k = 0; k < contact.size(); ++k) loop.contact[k] = static_cast<ContactState>(contact[k]);

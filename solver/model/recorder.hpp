@@ -31,6 +31,8 @@ struct RowSource {
   const EnergySums& sums;    ///< the layer's running sums
   double e_kin, e_el;        ///< energies of the layer (J/m)
   int n_x_source;            ///< nodes per mesh row of `state`: the layer's n_x, or 1 (the column)
+  const EnergySums* substrate_sums = nullptr;  ///< the substrate's running sums (null: rigid flat)
+  double e_kin_substrate = 0, e_el_substrate = 0;
 };
 
 class Recorder {
@@ -38,10 +40,15 @@ class Recorder {
   /// Keeps references to model and ledger (they must outlive the recorder).
   Recorder(const LayerModel& model, const EnergyLedger& ledger, const PreloadState& preload);
 
+  /// With a substrate (docs/substrate.md): its ledger (must outlive the recorder); from then on the interface
+  /// rows are relative (layer minus substrate), the energies both bodies', the snapshots include it.
+  void attach_substrate(const EnergyLedger& substrate_ledger);
   /// Rows at t = 0, before the first step; initializes loop.recording.
   void record_start(LoopState& loop, int contact_iterations);
   /// Rows of the step just done (t = loop.step dt); u_previous: all DOFs one step before.
-  void record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report);
+  /// u_previous_substrate: the substrate's DOFs one step before (null without a substrate).
+  void record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report,
+                   const Eigen::VectorXd* u_previous_substrate = nullptr);
   /// Rows at t = 0 and of a step just done, from the x-uniform column of the stick stage; its recording
   /// state (next snapshot, slip reference) is the column's.
   void record_uniform_start(LoopState& column, const EnergySums& sums, int contact_iterations, double e_kin,
@@ -63,11 +70,13 @@ class Recorder {
   /// DOF of `state` that holds component c of the layer's node (i, j) (node id j n_x + i).
   int source_dof(const RowSource& source, int node, int c) const;
   void record_global(double t, const RowSource& source, int contact_iterations, double contact_residual);
-  void record_interface(double t, const RowSource& source, const Eigen::VectorXd& u_previous);
+  void record_interface(double t, const RowSource& source, const Eigen::VectorXd& u_previous,
+                        const Eigen::VectorXd* u_previous_substrate = nullptr);
   void record_due_snapshots(double t, const RowSource& source, RecorderState& recording);
 
   const LayerModel& model_;
   const EnergyLedger& ledger_;
+  const EnergyLedger* substrate_ledger_ = nullptr;
   double dt_, opening_threshold_;
   std::vector<double> snapshot_times_;  ///< sorted
   RunRecord record_;

@@ -46,6 +46,10 @@ struct RunRecord {
   GlobalSeries global;
   SnapshotMesh snapshot_mesh;
   std::vector<Snapshot> snapshots;
+  /// With a substrate (docs/substrate.md): its mesh (physical coordinates, y <= 0) and its fields at the
+  /// snapshot times of `snapshots` (one each, same order); empty on a rigid flat.
+  SnapshotMesh substrate_snapshot_mesh;
+  std::vector<Snapshot> substrate_snapshots;
   bool complete = false;
   std::string end_reason;       ///< t_end | stop_after_opening | contact_not_converged | interrupted
   std::int64_t n_steps_done = 0;

@@ -16,6 +16,7 @@
 #include "model/loop_state.hpp"
 #include "model/loop_state_arrays.hpp"
 #include "model/recorder.hpp"
+#include "model/substrate.hpp"
 #include "model/uniform_stick.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -75,6 +76,34 @@ Eigen::VectorXd top_velocity(const LayerModel& m) {
   return v;
 }
 
+/// The substrate's dynamics (model/substrate.hpp, in its mirrored frame): its own HHT stepper on its own FFT
+/// split solver, its mass factorization, its energy ledger; its bottom is held at 0.
+struct SubstrateBody {
+  SubstrateBody(const LayerModel& body, const HHTCoefficients& hht, bool alpha_weighted)
+      : model(body),
+        system{body.K, body.K_ff, body.M_ff, body.M_ff_rows, body.K_fd, body.n_free, body.n_top, body.n_contact_dofs},
+        stepper(system, hht, alpha_weighted, body.factorize_split(effective_matrix(hht, system))),
+        M_ff(body.factorize(body.M_ff)),
+        ledger(body, Eigen::VectorXd::Zero(body.n_top)),
+        u_bottom(Eigen::VectorXd::Zero(body.n_top)) {}
+  /// W_S = w C K_eff,S^-1 C^T in the substrate's frame.
+  Eigen::MatrixXd delassus() const {
+    return stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), model.mesh.n_contact());
+  }
+  /// Its contact forces S r from the layer's r.
+  const Eigen::VectorXd& load(const Eigen::VectorXd& r) {
+    S_r = r;
+    mirror_x_components(S_r);
+    return S_r;
+  }
+  const LayerModel& model;
+  PartitionedSystem system;
+  HHTStepper stepper;
+  std::unique_ptr<LinearSolver> M_ff;
+  EnergyLedger ledger;
+  Eigen::VectorXd u_bottom, S_r;
+};
+
 /// Steps to the first time at or after t_end.
 std::int64_t n_steps_to(double t_end, double dt) {
   const double n = std::ceil(t_end / dt - 1e-9);
@@ -94,6 +123,13 @@ LoopState start_state(const LayerModel& m, const PreloadState& pre, const HHTSte
   loop.energy = ledger.start(loop.dynamics);
   loop.recording.u_contact_start = loop.dynamics.u.head(m.n_contact_dofs);
   return loop;
+}
+
+/// The substrate's state at t = 0: the preload at rest, loaded by the preload reactions.
+void start_substrate(const PreloadState& pre, SubstrateBody& sub, LoopState& loop) {
+  const int n = sub.model.n_free + sub.model.n_top;
+  loop.substrate = sub.stepper.initial_state(pre.u_substrate, Eigen::VectorXd::Zero(n), sub.load(pre.r), *sub.M_ff);
+  loop.substrate_energy = sub.ledger.start(loop.substrate);
 }
 
 /// Adds the seeded perturbation that breaks translation invariance: a uniform random displacement of every
@@ -152,10 +188,18 @@ bool all_stuck(const std::vector<ContactState>& state) {
 /// reported as 0 sweeps), and Gauss–Seidel only if a node would not stick.
 struct ContactStep {
   ContactStep(int n_c, const Eigen::MatrixXd& W) : q(n_c), r_next(n_c), du(n_c), all_stick(W) {}
+  /// @param u_free_substrate  null (rigid flat), or the substrate's free contact displacement (its frame):
+  ///                           then q = q_L + S q_S (model/substrate.hpp)
   GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::MatrixXd& W_columns, const Eigen::VectorXd& u_free,
-                          double f, const FrictionLaw& law, const GaussSeidelSettings& settings, LoopState& loop) {
+                          const Eigen::VectorXd* u_free_substrate, double f, const FrictionLaw& law,
+                          const GaussSeidelSettings& settings, LoopState& loop) {
     q = u_free.head(q.size());
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
+    if (u_free_substrate)
+      for (Eigen::Index k = 0; k < q.size() / 2; ++k) {
+        q(2 * k) -= (*u_free_substrate)(2 * k) - loop.substrate.u(2 * k);
+        q(2 * k + 1) += (*u_free_substrate)(2 * k + 1);
+      }
     law.bounds(loop.friction, bounds);
     r_next = loop.dynamics.r;
     if (all_stuck(loop.contact) && all_stick.solve(q, f, bounds, r_next, loop.contact))
@@ -183,7 +227,14 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
   HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
                      m.factorize_split(effective_matrix(hht, system)));
-  const Eigen::MatrixXd W = stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
+  // With a substrate: its own stepper, and the pair's operator W_L + S W_S S (model/substrate.hpp).
+  std::unique_ptr<SubstrateBody> sub;
+  if (m.substrate)
+    sub = std::make_unique<SubstrateBody>(*m.substrate, hht, c.time.contact_weighting == ContactWeighting::alpha);
+  const Eigen::MatrixXd W =
+      sub ? pair_delassus(stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2),
+                          sub->delassus())
+          : stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
   const Eigen::MatrixXd W_columns = delassus_periodic_columns(W);
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
@@ -194,9 +245,14 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const EnergyLedger ledger(m, top_velocity(m).tail(m.n_top));
   LoopState loop = start_state(m, pre, stepper, *friction, ledger, *M_ff);
   Recorder recorder(m, ledger, pre);
+  if (sub) {
+    start_substrate(pre, *sub, loop);
+    recorder.attach_substrate(sub->ledger);
+  }
   UniformStick stick(m, pre);
   const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
-  const std::int64_t n_handover = stick.handover_step(n_steps_max, stop_requested);
+  // No stick stage with a substrate (docs/substrate.md): the layer's own steps from t = 0.
+  const std::int64_t n_handover = sub ? 0 : stick.handover_step(n_steps_max, stop_requested);
   if (observer) observer->setup_done();
   const StateArrays* resumed = observer ? observer->start_state() : nullptr;
   if (resumed) restore_from_arrays(*resumed, loop);
@@ -252,22 +308,36 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     stepper.predict(s, u_d_next);
     watch.lap(&StepProfile::predictor);
     const Eigen::VectorXd& u_free = stepper.solve_free();
+    const Eigen::VectorXd* u_free_substrate = nullptr;
+    if (sub) {
+      sub->stepper.predict(loop.substrate, sub->u_bottom);
+      u_free_substrate = &sub->stepper.solve_free();
+    }
     watch.lap(&StepProfile::free_solve);
-    // 4b. Contact forces r(n+1): Signorini–Coulomb at every node, bounds from the friction law.
-    const GaussSeidelReport report = contact.solve(W, W_columns, u_free, c.friction.f, *friction, settings, loop);
+    // 4b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
+    const GaussSeidelReport report =
+        contact.solve(W, W_columns, u_free, u_free_substrate, c.friction.f, *friction, settings, loop);
     if (!report.converged) { failure = "contact_not_converged"; break; }
     watch.lap(&StepProfile::contact);
     // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
     u_d_following = top_after(loop.step + 2);
     stepper.correct(contact.r_next, s, &u_d_following);
+    if (sub) sub->stepper.correct(sub->load(contact.r_next), loop.substrate, &sub->u_bottom);
     u_d_next.swap(u_d_following);
     watch.lap(&StepProfile::correction);
     // 4d. Energy ledger, friction memory, output rows, first opening.
     ++loop.step;
     contact.du = s.u.head(n_c) - stepper.u_previous().head(n_c);
     ledger.book_step(s, stepper.u_previous(), stepper.r_previous(), contact.du, loop.energy);
+    if (sub) {  // each body books its own contact work; the friction law sees the relative increment
+      Eigen::VectorXd du_substrate = loop.substrate.u.head(n_c) - sub->stepper.u_previous().head(n_c);
+      sub->ledger.book_step(loop.substrate, sub->stepper.u_previous(), sub->stepper.r_previous(), du_substrate,
+                            loop.substrate_energy);
+      mirror_x_components(du_substrate);
+      contact.du += du_substrate;
+    }
     friction->update(contact.du, s.r, hht.dt, loop.friction);
-    recorder.record_step(loop, stepper.u_previous(), report);
+    recorder.record_step(loop, stepper.u_previous(), report, sub ? &sub->stepper.u_previous() : nullptr);
     if (recorder.detect_first_opening(loop)) shorten_after_opening(c.time, t, loop);
     watch.lap(&StepProfile::diagnostics);
     watch.count(loop.step, report.iterations);

@@ -11,6 +11,9 @@
 //            record     energy ledger, friction memory, output rows, first opening (model/recorder.hpp)
 // where w = 1-a, a' = a ("alpha" weighting, contact forces like F_ext) or w = 1, a' = 0 ("end").
 // Everything carried from step to step is in LoopState (model/loop_state.hpp).
+// With a deformable substrate (docs/substrate.md, model/substrate.hpp) the substrate takes the same step with
+// its own stepper (its bottom held), the contact problem is the pair's (q = q_L + S q_S, W = W_L + S W_S S),
+// its correction takes S r(n+1), and there is no stick stage.
 #include <atomic>
 #include <functional>
 

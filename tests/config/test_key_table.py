@@ -30,6 +30,7 @@ POINT_KEYS = {
 MODEL_KEYS = {"E": "material.E", "H": "geometry.H", "Uy_over_H": "loading.Uy_over_H",
               "preshear_ratio": "loading.preshear_ratio"}
 RUN_LENGTH_KEYS = {"t_end": "time.t_end"}
+SUBSTRATE_KEYS = {"E": "substrate.E", "nu": "substrate.nu", "rho": "substrate.rho", "H": "substrate.H"}
 
 
 @pytest.fixture(scope="module")
@@ -50,6 +51,8 @@ def schema_properties():
     for name, key in RUN_LENGTH_KEYS.items():
         yield "run_length", name, definitions["run_length"]["properties"][name], key
         yield "properties.run_length", name, SCHEMA["properties"]["run_length"]["properties"][name], key
+    for name, key in SUBSTRATE_KEYS.items():
+        yield "substrate", name, definitions["substrate"]["properties"][name], key
 
 
 def lower_of(sub):
@@ -68,6 +71,13 @@ def upper_of(sub):
 def test_every_point_and_model_parameter_is_mapped():
     assert set(SCHEMA["definitions"]["point"]["properties"]) == set(POINT_KEYS)
     assert set(SCHEMA["properties"]["model"]["properties"]) == set(MODEL_KEYS)
+    assert set(SCHEMA["definitions"]["substrate"]["properties"]) == set(SUBSTRATE_KEYS)
+
+
+def test_schema_substrate_is_all_or_none():
+    assert admits({"$ref": "#/definitions/solver_keys"}, {"substrate": {"E": 1e3, "nu": 0.2, "rho": 1e3, "H": 25.0}})
+    assert not admits({"$ref": "#/definitions/solver_keys"}, {"substrate": {"E": 1e3}})
+    assert not admits({"$ref": "#/definitions/solver_keys"}, {"substrate": {"E": 1e3, "nu": 0.5, "rho": 1e3, "H": 1.0}})
 
 
 PROPERTIES = [pytest.param(*p, id=f"{p[0]}.{p[1]}") for p in schema_properties()]

@@ -13,6 +13,8 @@ import pytest
 REPO = Path(__file__).resolve().parents[2]
 SOLVER = Path(os.environ.get("SLIDEWAVE_BIN", REPO / "build" / "slidewave"))
 
+SUBSTRATE = '{"substrate": {"E": %r, "nu": %r, "rho": %r, "H": %r}}'
+
 CASES = {
     # b773bb5: accepted, wrapped to -9223372036854775808
     "seed_1e19": ('{"perturbation": {"seed": 1e19}}', ["perturbation.seed", "9007199254740991"]),
@@ -23,6 +25,19 @@ CASES = {
     # b773bb5: the second "mesh" group replaced the first, exit 0
     "duplicate_group": ('{"mesh": {"elements_per_H": 4}, "mesh": {"integration": "full"}}', ["mesh", "twice"]),
     "duplicate_key": ('{"time": {"t_end": 60, "t_end": 70}}', ["time.t_end", "twice"]),
+    # issue 24 item 8: the substrate group (all four keys or none; a whole number of elements)
+    "substrate_E_zero": (SUBSTRATE % (0, 0.2, 1000, 25), ["substrate.E", "E > 0"]),
+    "substrate_E_negative": (SUBSTRATE % (-1e3, 0.2, 1000, 25), ["substrate.E", "E > 0"]),
+    "substrate_nu_half": (SUBSTRATE % (1e3, 0.5, 1000, 25), ["substrate.nu", "0 <= nu < 0.5"]),
+    "substrate_nu_negative": (SUBSTRATE % (1e3, -0.1, 1000, 25), ["substrate.nu", "0 <= nu < 0.5"]),
+    "substrate_rho_zero": (SUBSTRATE % (1e3, 0.2, 0, 25), ["substrate.rho", "rho > 0"]),
+    "substrate_H_zero": (SUBSTRATE % (1e3, 0.2, 1000, 0), ["substrate.H", "H > 0"]),
+    "substrate_H_fraction": (SUBSTRATE % (1e3, 0.2, 1000, 10.1), ["substrate.H", "whole number of elements"]),
+    "substrate_H_one_element": (SUBSTRATE % (1e3, 0.2, 1000, 25.0 / 32), ["substrate.H", "[2, 65536]"]),
+    "substrate_E_alone": ('{"substrate": {"E": 1000}}', ["substrate.nu", "substrate.rho", "substrate.H",
+                                                        "together"]),
+    "substrate_unknown_key": ('{"substrate": {"E": 1000, "nu": 0.2, "rho": 1000, "H": 25, "G": 1}}',
+                              ["substrate.G", "unknown key"]),
 }
 
 
@@ -68,3 +83,19 @@ def test_a_huge_value_is_not_echoed(solver, tmp_path, command):
     assert result.returncode == 2, result.stderr[:300]
     assert "mesh.integration" in result.stderr and "unknown group" in result.stderr, result.stderr[:300]
     assert len(result.stderr) < 1000, f"{len(result.stderr)} characters on stderr"
+
+
+def test_a_whole_substrate_is_accepted_and_resolved(solver, tmp_path):
+    config = tmp_path / "config.json"
+    config.write_text(SUBSTRATE % (3000.0, 0.3, 2000.0, 12.5))
+    result = invoke(solver, tmp_path, "check", config)
+    assert result.returncode == 0, result.stderr
+    assert '"substrate"' in result.stdout and '"E": 3000.0' in result.stdout
+
+
+def test_no_substrate_leaves_the_resolved_config_without_the_group(solver, tmp_path):
+    config = tmp_path / "config.json"
+    config.write_text("{}")
+    result = invoke(solver, tmp_path, "check", config)
+    assert result.returncode == 0, result.stderr
+    assert '"substrate"' not in result.stdout

@@ -170,3 +170,39 @@ def test_partial_file_without_the_checkpointed_rows_starts_over(tmp_path, refere
     assert "cannot resume" in result.stderr and "/global/T" in result.stderr and "starting over" in result.stderr
     assert_same_datasets(tmp_path / "RUN.h5", reference_file)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["RUN.h5", "RUN.interface.xdmf", "RUN.xdmf", "run.json"]
+
+
+def test_a_substrate_run_stopped_and_resumed_equals_the_uninterrupted_one(tmp_path):
+    """With a deformable substrate (format 3): the checkpoint carries the substrate, and the resumed file
+    (its prefix copied from RUN.partial.h5, /substrate_snapshots included) equals the uninterrupted run."""
+    config = {"mesh": {"elements_per_H": 8}, "friction": {"f": 0.3}, "loading": {"V0_over_cs": 1e-3},
+              "substrate": {"E": 3000.0, "nu": 0.3, "rho": 2000.0, "H": 12.5},
+              "time": {"t_end": 400.0},
+              "output": {"interface_stride": 3, "snapshot_times": [0, 100, 300], "progress": "never",
+                         "checkpoint_interval": 0}}
+    runs = {}
+    for name, env in (("whole", {}), ("stopped", {"SLIDEWAVE_TEST_SIGNAL_AT_STEP": "200"})):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / "config.json").write_text(json.dumps(config))
+        args = [solver(), "run", str(folder / "config.json"), "-o", str(folder / "run.h5")]
+        result = subprocess.run(args, capture_output=True, text=True, timeout=300, env={**os.environ, **env})
+        if name == "stopped":
+            assert result.returncode == 3, result.stderr
+            assert (folder / "run.checkpoint.h5").is_file()
+            result = subprocess.run(args + ["--resume"], capture_output=True, text=True, timeout=300)
+        assert result.returncode == 0, result.stderr
+        runs[name] = folder / "run.h5"
+
+    def datasets(path):
+        out = {}
+        with h5py.File(path, "r") as f:
+            f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
+            assert f.attrs["format_version"] == 3
+        return out
+
+    whole, resumed = datasets(runs["whole"]), datasets(runs["stopped"])
+    assert set(whole) == set(resumed)
+    assert any(name.startswith("substrate_snapshots/0002") for name in whole)
+    for name in whole:
+        assert whole[name].tobytes() == resumed[name].tobytes(), name

@@ -99,3 +99,41 @@ def test_interface_sidecar_reads_back_as_the_interface_series(vtk, run_file):
             np.testing.assert_array_equal(vtk_to_numpy(array), interface[field][k], err_msg=f"step {k} {field}")
     # Something happens at the interface, so the comparison is not one of zeros.
     assert np.abs(interface["normal_traction"]).max() > 0 and np.abs(interface["slip_velocity"]).max() > 0
+
+
+@pytest.fixture(scope="module")
+def substrate_run_file(tmp_path_factory):
+    """A tiny run with a deformable substrate (docs/substrate.md): format 3, /substrate_snapshots."""
+    import json
+    import subprocess
+
+    from solver_runs import solver_or_skip
+    folder = tmp_path_factory.mktemp("xdmf_substrate")
+    config = {"mesh": {"elements_per_H": 8}, "time": {"t_end": 60.0},
+              "substrate": {"E": 3000.0, "nu": 0.3, "rho": 2000.0, "H": 12.5},
+              "output": {"interface_stride": 4, "snapshot_times": SNAPSHOT_TIMES, "progress": "never"}}
+    (folder / "config.json").write_text(json.dumps(config))
+    subprocess.run([str(solver_or_skip()), "run", str(folder / "config.json"), "-o", str(folder / "run.h5")],
+                   check=True, capture_output=True, timeout=300)
+    return folder / "run.h5"
+
+
+def test_bulk_sidecar_of_a_substrate_run_holds_both_bodies(vtk, substrate_run_file):
+    """Each time is a spatial collection (a multiblock for VTK): the layer, then the substrate."""
+    _, vtk_to_numpy, _ = vtk
+    steps = read_all_times(vtk, substrate_run_file.with_suffix(".xdmf"))
+    assert len(steps) == len(SNAPSHOT_TIMES)
+    with h5py.File(substrate_run_file, "r") as f:
+        assert f.attrs["format_version"] == 3
+        for (t, blocks), k in zip(steps, range(len(SNAPSHOT_TIMES))):
+            assert blocks.GetNumberOfBlocks() == 2, blocks.GetClassName()
+            key = f"{k:04d}"
+            for b, group_name in enumerate(("snapshots", "substrate_snapshots")):
+                grid, group = blocks.GetBlock(b), f[group_name]
+                points = vtk_to_numpy(grid.GetPoints().GetData())
+                np.testing.assert_array_equal(points[:, :2], group["coordinates"][()])
+                for field in ("displacement", "velocity"):
+                    values = vtk_to_numpy(grid.GetPointData().GetArray(field))
+                    np.testing.assert_array_equal(values[:, :2], group[key][field][()], err_msg=f"{group_name} {key}")
+            assert f["substrate_snapshots"]["coordinates"][()][:, 1].min() == -12.5
+            assert np.abs(f["substrate_snapshots"][key]["displacement"][()]).max() > 0

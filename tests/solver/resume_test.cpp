@@ -107,6 +107,17 @@ TEST(Resume, CoulombWithSnapshotsOnBothSides) {
                1500);
 }
 
+// A deformable substrate (docs/substrate.md): the checkpoint carries its dynamics and its ledger too.
+TEST(Resume, WithASubstrateCarriesBothBodies) {
+  check_resume({{"mesh", {{"elements_per_H", 8}}},
+                {"friction", {{"f", 0.3}}},
+                {"loading", {{"V0_over_cs", 1e-3}}},
+                {"substrate", {{"E", 3e3}, {"nu", 0.3}, {"rho", 2e3}, {"H", 12.5}}},
+                {"time", {{"t_end", 200.0}}},
+                {"output", {{"interface_stride", 3}, {"snapshot_times", {0, 50, 150}}, {"energy_decomposition", "hht"}}}},
+               100);
+}
+
 // Stopped in the stick stage (model/uniform_stick.hpp: the layer moves as its x-uniform column until the
 // handover, ~200 steps before the first slip at ~960): the checkpoint holds the column at every mesh column,
 // the continued run goes on from the column, hands over and seeds as the uninterrupted one; with the HHT

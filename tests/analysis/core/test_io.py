@@ -29,7 +29,8 @@ def test_reads_a_contract_file(run_file):
 @pytest.mark.parametrize("version, message", [
     (0, "format_version 0 is not supported"),
     (1, "format_version 1 is an older run-file format .*rerun the solver"),
-    (3, "format_version 3 is not supported"),
+    (4, "format_version 4 is not supported"),
+    (3, "/setup attribute.*missing: substrate_E"),  # format 3 (a substrate) without its constants
     ("2", "expected the integer 2"),
     (1.5, "expected the integer 2"),
 ])
@@ -37,6 +38,23 @@ def test_rejects_other_format_versions(run_file, version, message):
     path = run_file(Scenario(format_version=version))
     with pytest.raises(InputError, match=message):
         load_run(path)
+
+
+def test_reads_a_substrate_run_of_format_3(run_file):
+    import h5py
+    path = run_file(Scenario(format_version=3))
+    constants = {"substrate_E": 3e3, "substrate_nu": 0.3, "substrate_rho": 2e3, "substrate_H": 25.0,
+                 "substrate_c_s": 0.76, "substrate_c_l": 1.42, "substrate_return_time": 35.2}
+    with h5py.File(path, "r+") as file:
+        for name, value in constants.items():
+            file["setup"].attrs[name] = value
+    run = load_run(path)
+    assert run.has_substrate
+    assert run.attr("substrate_E") == 3e3 and run.attr("substrate_return_time") == 35.2
+
+
+def test_a_rigid_flat_run_has_no_substrate(run_file):
+    assert not load_run(run_file(Scenario())).has_substrate
 
 
 def test_rejects_file_without_format_version(run_file):
