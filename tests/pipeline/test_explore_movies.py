@@ -28,7 +28,7 @@ def test_a_bad_point_is_rejected_naming_the_key_and_range(tmp_path, point, key, 
     result = snakemake(tmp_path, "-n", "-c1", "explore", "--config", f"point={point}", check=False)
     assert result.returncode != 0
     output = result.stdout + result.stderr
-    assert f"'{key}'" in output and words in output
+    assert (f"`point.{key}`" in output or f"'{key}'" in output) and words in output
     assert not (tmp_path / "results").exists()
 
 
