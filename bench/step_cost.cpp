@@ -1,5 +1,5 @@
-// Per-step cost of slidewave runs: the stick stage on the x-uniform column (steps, ms per step), then per
-// step of the layer: predictor, free solve, contact, correction, diagnostics and output (with --stream), steps/s, the ratio of one step to one K_eff solve with the
+// Per-step cost of slidewave runs: split into predictor, free solve, contact, correction,
+// diagnostics and output (with --stream), steps/s, the ratio of one step to one K_eff solve with the
 // run's solver (step/slv, the machine-independent figure), and the peak resident memory of the process
 // so far (getrusage; run one case per process for the peak of that case alone).
 // On the spectral path the "free solve" is the forward half (FFT, sweeps, contact rows) and the
@@ -9,7 +9,7 @@
 //                                      [--threads N] [--stream FOLDER [--checkpoint-interval S]]
 //                                      [--substrate E_RATIO]
 // --substrate adds a deformable substrate of the layer's size (H_s = H, its nu and rho, E_s = E_RATIO E;
-// docs/substrate.md): the pair has no stick stage, every step is the pair's.
+// docs/substrate.md).
 // --threads sets numerics.threads (the thread team of one spectral solve; CHOLMOD's BLAS is left as the
 // process starts). sweeps/step is the mean count of Gauss–Seidel sweeps per step (0 on a step solved by the
 // exact all-stick solution, contact/all_stick.hpp).
@@ -148,8 +148,8 @@ int main(int argc, char** argv) {
               t_end, solver_name.c_str(), threads, threads == 1 ? "" : "s",
               stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
                                                              std::to_string(checkpoint_interval) + " s").c_str());
-  std::printf("%6s %5s %8s %9s %7s %8s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h",
-              "lam/H", "n_dofs", "steps", "stick", "stick_ms", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s",
+  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h",
+              "lam/H", "n_dofs", "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s",
               "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
   for (double lambda_over_H : lambdas)
   for (int n : resolutions) {
@@ -178,18 +178,15 @@ int main(int argc, char** argv) {
     slidewave::simulate(model, {}, nullptr, &profile, timed.get());
     const double output_seconds = timed ? timed->seconds : 0;
     const double total = seconds_since(start);
-    // ms/step and the phases: per step of the layer (after the stick stage); the stick stage apart.
-    const std::int64_t layer_steps = profile.steps - profile.stick_steps;
-    const double per_step = (total - profile.setup - profile.stick_stage) / layer_steps;
+    const double per_step = (total - profile.setup) / profile.steps;
     const double solve = one_solve_seconds(model);
-    const auto ms = [&](double s) { return 1e3 * s / layer_steps; };
-    std::printf("%6d %5g %8d %9lld %7lld %8.4f | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.2f %8.1f\n",
+    const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
+    std::printf("%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.2f %8.1f\n",
                 n, lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps),
-                static_cast<long long>(profile.stick_steps),
-                profile.stick_steps ? 1e3 * profile.stick_stage / profile.stick_steps : 0.0, ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
+                ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
                 ms(profile.correction), ms(profile.diagnostics), ms(output_seconds), 1e3 * per_step, 1 / per_step,
                 1e3 * solve, 1e3 * stiffness_product_seconds(model), per_step / solve,
-                static_cast<double>(profile.contact_sweeps) / layer_steps, profile.setup, total, peak_rss_mb());
+                static_cast<double>(profile.contact_sweeps) / profile.steps, profile.setup, total, peak_rss_mb());
     std::fflush(stdout);
   }
   return 0;

@@ -3,7 +3,7 @@
 before it, in units of the seed spread of the published cells' ensemble.
 
 A change that solves the same discrete problem another way (to round-off, to the contact tolerance, or with
-another realization of the seeded perturbation, docs/stick-phase.md) cannot reproduce a run bit for bit
+another realization of the seeded perturbation) cannot reproduce a run bit for bit
 after slip onset (the problem is chaotic there), so the question is whether it moves a celerity by more
 than the perturbation seed already does. Prints, for every published cell, the celerity before and after,
 their difference and that difference over the ensemble's seed standard deviation; then, over the whole

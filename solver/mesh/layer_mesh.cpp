@@ -5,10 +5,7 @@
 namespace slidewave {
 
 LayerMesh::LayerMesh(int nx, int ny, double hh) : n_x(nx), n_y(ny), h(hh) {
-  // n_x = 1 is the x-uniform column of model/uniform_stick.hpp: an element's left and right nodes are then
-  // the same node, and the assembly (which sums duplicate entries) sums each row of K and M over x.
-  if (n_x < 1 || n_x == 2 || n_y < 1 || !(h > 0))
-    throw std::invalid_argument("LayerMesh: need n_x = 1 or n_x >= 3, n_y >= 1, h > 0");
+  if (n_x < 3 || n_y < 1 || !(h > 0)) throw std::invalid_argument("LayerMesh: need n_x >= 3, n_y >= 1, h > 0");
 }
 
 std::array<int, 4> LayerMesh::element_nodes(int e) const {

@@ -3,7 +3,6 @@
 // Node (i, j), i in [0, n_x) (x = i h, periodic: i = n_x is i = 0), j in [0, n_y] (y = j h).
 // Node id = j * n_x + i; degree of freedom 2 * id + d (d = 0: u_x, d = 1: u_y).
 // Row j = 0 touches the rigid flat (contact nodes); row j = n_y is displacement-controlled.
-// n_x = 1 is the layer's x-uniform column (each element's two columns of nodes are one; model/uniform_stick.hpp).
 #include <array>
 #include <vector>
 

@@ -57,18 +57,13 @@ void Recorder::attach_substrate(const EnergyLedger& substrate_ledger) {
 }
 
 RowSource Recorder::layer_source(const LoopState& loop) const {
-  RowSource source{loop, loop.energy, ledger_.kinetic(loop.dynamics), ledger_.elastic(loop.dynamics), model_.mesh.n_x};
+  RowSource source{loop, loop.energy, ledger_.kinetic(loop.dynamics), ledger_.elastic(loop.dynamics)};
   if (substrate_ledger_) {
     source.substrate_sums = &loop.substrate_energy;
     source.e_kin_substrate = substrate_ledger_->kinetic(loop.substrate);
     source.e_el_substrate = substrate_ledger_->elastic(loop.substrate);
   }
   return source;
-}
-
-int Recorder::source_dof(const RowSource& source, int node, int c) const {
-  const int n_x = model_.mesh.n_x, j = node / n_x, i = node % n_x;
-  return 2 * (j * source.n_x_source + i % source.n_x_source) + c;
 }
 
 void Recorder::record_start(LoopState& loop, int contact_iterations) {
@@ -90,24 +85,6 @@ void Recorder::record_step(LoopState& loop, const Eigen::VectorXd& u_previous, c
   if (loop.step % model_.config.output.interface_stride == 0)
     record_interface(t, source, u_previous, u_previous_substrate);
   record_due_snapshots(t, source, loop.recording);
-}
-
-void Recorder::record_uniform_start(LoopState& column, const EnergySums& sums, int contact_iterations, double e_kin,
-                                    double e_el) {
-  column.recording = RecorderState{column.dynamics.u.head(2), 0, -1};
-  const RowSource source{column, sums, e_kin, e_el, 1};
-  record_global(0, source, contact_iterations, 0);
-  record_interface(0, source, column.dynamics.u);
-  record_due_snapshots(0, source, column.recording);
-}
-
-void Recorder::record_uniform_step(LoopState& column, const Eigen::VectorXd& u_previous, const EnergySums& sums,
-                                   double e_kin, double e_el) {
-  const double t = column.step * dt_;
-  const RowSource source{column, sums, e_kin, e_el, 1};
-  record_global(t, source, 0, 0);  // the stick steps are solved exactly: no sweep, no residual
-  if (column.step % model_.config.output.interface_stride == 0) record_interface(t, source, u_previous);
-  record_due_snapshots(t, source, column.recording);
 }
 
 bool Recorder::detect_first_opening(LoopState& loop) {
@@ -133,8 +110,8 @@ void Recorder::record_global(double t, const RowSource& source, int contact_iter
   const Eigen::VectorXd& r = source.state.dynamics.r;
   double T = 0, N = 0;
   for (int k = 0; k < model_.mesh.n_contact(); ++k) {
-    T -= r(source_dof(source, k, 0));
-    N += r(source_dof(source, k, 1));
+    T -= r(2 * k);
+    N += r(2 * k + 1);
   }
   double e_kin = source.e_kin, e_el = source.e_el;
   const EnergySums& e = source.sums;
@@ -184,7 +161,7 @@ void Recorder::record_interface(double t, const RowSource& source, const Eigen::
   auto& s = record_.interface;
   s.t.push_back(t);
   for (int k = 0; k < model_.mesh.n_contact(); ++k) {
-    const int x = source_dof(source, k, 0), y = source_dof(source, k, 1);
+    const int x = 2 * k, y = 2 * k + 1;
     if (u_previous_substrate) {  // relative: layer minus substrate (model/substrate.hpp)
       const Eigen::VectorXd &u_s = source.state.substrate.u, &u_s_previous = *u_previous_substrate;
       const double rel_x = u(x) - u_s(x), rel_x_previous = u_previous(x) - u_s_previous(x);
@@ -211,8 +188,8 @@ void Recorder::record_due_snapshots(double t, const RowSource& source, RecorderS
       for (int i = 0; i <= model_.mesh.n_x; ++i) {  // i = n_x repeats i = 0 (see snapshot_mesh)
         const int node = model_.mesh.node(i, j);
         for (int c = 0; c < 2; ++c) {
-          snap.displacement.push_back(u(source_dof(source, node, c)));
-          snap.velocity.push_back(v(source_dof(source, node, c)));
+          snap.displacement.push_back(u(2 * node + c));
+          snap.velocity.push_back(v(2 * node + c));
         }
       }
     record_.snapshots.push_back(std::move(snap));

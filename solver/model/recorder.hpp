@@ -24,13 +24,11 @@ namespace slidewave {
 /// (the same as analysis/opening.py, which documents the evidence for it). Written to /setup.
 double opening_threshold(const RunConfig& config);
 
-/// The state a row is read from: the layer's own, or its x-uniform column during the stick stage
-/// (model/uniform_stick.hpp), read at node (i, j) of the layer through the column's node of mesh row j.
+/// What a row is read from: the state, the running sums and the energies of the step.
 struct RowSource {
-  const LoopState& state;    ///< the layer's, or the column's
+  const LoopState& state;
   const EnergySums& sums;    ///< the layer's running sums
   double e_kin, e_el;        ///< energies of the layer (J/m)
-  int n_x_source;            ///< nodes per mesh row of `state`: the layer's n_x, or 1 (the column)
   const EnergySums* substrate_sums = nullptr;  ///< the substrate's running sums (null: rigid flat)
   double e_kin_substrate = 0, e_el_substrate = 0;
 };
@@ -49,12 +47,6 @@ class Recorder {
   /// u_previous_substrate: the substrate's DOFs one step before (null without a substrate).
   void record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report,
                    const Eigen::VectorXd* u_previous_substrate = nullptr);
-  /// Rows at t = 0 and of a step just done, from the x-uniform column of the stick stage; its recording
-  /// state (next snapshot, slip reference) is the column's.
-  void record_uniform_start(LoopState& column, const EnergySums& sums, int contact_iterations, double e_kin,
-                            double e_el);
-  void record_uniform_step(LoopState& column, const Eigen::VectorXd& u_previous, const EnergySums& sums,
-                           double e_kin, double e_el);
   /// True at the first step at which a contact node opens more than opening_threshold (then records its time).
   bool detect_first_opening(LoopState& loop);
   /// Last apparent friction T/N recorded (for progress reports).
@@ -67,8 +59,6 @@ class Recorder {
 
  private:
   RowSource layer_source(const LoopState& loop) const;
-  /// DOF of `state` that holds component c of the layer's node (i, j) (node id j n_x + i).
-  int source_dof(const RowSource& source, int node, int c) const;
   void record_global(double t, const RowSource& source, int contact_iterations, double contact_residual);
   void record_interface(double t, const RowSource& source, const Eigen::VectorXd& u_previous,
                         const Eigen::VectorXd* u_previous_substrate = nullptr);

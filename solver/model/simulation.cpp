@@ -17,7 +17,6 @@
 #include "model/loop_state_arrays.hpp"
 #include "model/recorder.hpp"
 #include "model/substrate.hpp"
-#include "model/uniform_stick.hpp"
 #include "time/hht_stepper.hpp"
 
 namespace slidewave {
@@ -121,7 +120,6 @@ LoopState start_state(const LayerModel& m, const PreloadState& pre, const HHTSte
   loop.contact = pre.state;
   loop.friction = friction.initial_state(pre.r);
   loop.energy = ledger.start(loop.dynamics);
-  loop.recording.u_contact_start = loop.dynamics.u.head(m.n_contact_dofs);
   return loop;
 }
 
@@ -136,7 +134,7 @@ void start_substrate(const PreloadState& pre, SubstrateBody& sub, LoopState& loo
 /// free DOF but the contact nodes' normal ones (no gap, no penetration), amplitude relative to the preshear
 /// top displacement, from std::mt19937_64(seed). The acceleration changes by M_ff da = -(K du)_f, which
 /// keeps M a + K u - C^T r, and with it the HHT step's carried state, as it was; the seed's elastic energy
-/// is booked as energy given at the start, the slip reference moves with the seed (slip stays 0).
+/// is part of the energy at the start.
 void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& ledger, const LinearSolver& M_ff,
               LoopState& loop) {
   const auto& c = m.config;
@@ -166,7 +164,6 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
     e.hht.Ma_f = s.Ma_f;
     e.hht.Ku_f = s.Ku.head(n_f);
   }
-  loop.recording.u_contact_start += du.head(n_c);
 }
 
 /// time.stop_after_opening: once the interface has opened at t, the run ends that long after.
@@ -239,61 +236,32 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
 
-  // 3. The state at t = 0, before the seed; or, continuing a run, the state of its checkpoint (whose rows
-  //    are already in the output).
+  // 3. The state at t = 0 with the seed, and the output rows at t = 0; or, continuing a run, the state of
+  //    its checkpoint (whose rows are already in the output).
   const auto M_ff = m.factorize(m.M_ff);
   const EnergyLedger ledger(m, top_velocity(m).tail(m.n_top));
   LoopState loop = start_state(m, pre, stepper, *friction, ledger, *M_ff);
+  add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);
   if (sub) {
     start_substrate(pre, *sub, loop);
     recorder.attach_substrate(sub->ledger);
   }
-  UniformStick stick(m, pre);
   const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
-  // No stick stage with a substrate (docs/substrate.md): the layer's own steps from t = 0.
-  const std::int64_t n_handover = sub ? 0 : stick.handover_step(n_steps_max, stop_requested);
   if (observer) observer->setup_done();
-  const StateArrays* resumed = observer ? observer->start_state() : nullptr;
-  if (resumed) restore_from_arrays(*resumed, loop);
-  bool uniform = loop.step < n_handover;  // the stick stage: the layer moves as its column (model/uniform_stick.hpp)
-  const RunObserver::Capture capture = [&] {
-    if (!uniform) return to_arrays(loop);
-    LoopState layer = loop;
-    stick.expand_into(layer);
-    return to_arrays(layer);
-  };
-  if (resumed && uniform) stick.resume_from(loop);
-  if (!resumed) {
-    if (uniform) {
-      stick.start(loop, recorder, pre.contact_iterations);
-    } else {
-      add_seed(m, pre, ledger, *M_ff, loop);
-      recorder.record_start(loop, pre.contact_iterations);
-    }
+  const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
+  if (const StateArrays* resumed = observer ? observer->start_state() : nullptr) {
+    loop.recording.u_contact_start.resize(n_c);
+    restore_from_arrays(*resumed, loop);
+  } else {
+    recorder.record_start(loop, pre.contact_iterations);
     if (observer) observer->after_step(recorder.rows(), capture);
   }
   watch.lap(&StepProfile::setup);
   ProgressPacer pacer(progress);
   std::string failure;  // why the run stopped early, if it did
 
-  // 4. The stick stage on the column, up to the handover: then the column at every mesh column, and the seed.
-  while (uniform && loop.step < n_handover) {
-    if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
-    if (!stick.step(loop, recorder)) throw std::logic_error("the column slipped before the handover step");
-    watch.lap(&StepProfile::stick_stage);
-    watch.count(loop.step, 0);
-    pacer.step_done(loop.step * hht.dt, stick.column(), recorder);
-    if (observer) observer->after_step(recorder.rows(), capture);
-  }
-  if (profile) profile->stick_steps = loop.step;
-  if (uniform && failure.empty()) {
-    stick.expand_into(loop);
-    uniform = false;
-    if (loop.step < n_steps_max) add_seed(m, pre, ledger, *M_ff, loop);
-  }
-
-  // 5. The layer's time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
+  // 4. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
   ContactStep contact(n_c, W);
   // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.

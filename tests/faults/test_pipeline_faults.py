@@ -19,9 +19,8 @@ from solver_runs import solver_or_skip
 REPO = Path(__file__).resolve().parents[2]
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
 
-# Two H/32 points with a small time step: about 26000 steps each, most of them after slip onset (the
-# stick phase before it is the cheap column stage, docs/stick-phase.md: ~2 s of CPU each), long enough
-# to be stopped in the middle also on an idle machine.
+# Two H/32 points with a small time step: about 13000 steps each (3 s of CPU), long enough to be
+# stopped in the middle also on an idle machine.
 SWEEP = "faults_interrupted"
 CONFIG = f"""
 sweeps:
@@ -29,9 +28,9 @@ sweeps:
     description: two H/32 points with a small time step (fault test of an interrupted sweep)
     fixed: {{elements_per_H: 32, dt_times_cs: 0.03}}
     points:
-      - {{nu: 0.2, f: 0.6}}
+      - {{nu: 0.2, f: 1.5}}
       - {{nu: 0.2, f: 0.5}}
-    run_length: {{t_end: 1200.0, stop_after_opening_transits: null}}
+    run_length: {{t_end: 600.0, stop_after_opening_transits: null}}
     products: []
 """
 

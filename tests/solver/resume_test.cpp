@@ -118,17 +118,6 @@ TEST(Resume, WithASubstrateCarriesBothBodies) {
                100);
 }
 
-// Stopped in the stick stage (model/uniform_stick.hpp: the layer moves as its x-uniform column until the
-// handover, ~200 steps before the first slip at ~960): the checkpoint holds the column at every mesh column,
-// the continued run goes on from the column, hands over and seeds as the uninterrupted one; with the HHT
-// energy terms and snapshots inside and after the stage.
-TEST(Resume, InsideTheStickStage) {
-  check_resume({{"mesh", {{"elements_per_H", 8}}},
-                {"time", {{"t_end", 1300.0}}},
-                {"output", {{"interface_stride", 2}, {"energy_decomposition", "hht"}, {"snapshot_times", {0, 60, 1200}}}}},
-               100);
-}
-
 /// First step at which a contact node slips (from the interface rows, stride 1).
 std::int64_t first_slip_step(const RunRecord& rec) {
   const auto& state = rec.interface.state;

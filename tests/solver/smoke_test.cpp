@@ -169,9 +169,8 @@ void check_supersonic_backward(int elements_per_H) {
 }
 
 // Slip without opening, checked at f = 0.7, inside the no-opening region: f = 0.8 lies near its edge on
-// the coarse meshes, where single seeds open by a fraction of a millimetre (H/32: seed 3 by 2.3e-5 m when
-// the seed was carried from t = 0; seed 1 by 7e-4 m with the seed of the stick stage; none of seeds 1-3
-// at H/64), so a check there tests a seed, not the regime.
+// the coarse meshes, where single seeds open by a fraction of a millimetre (H/32: seed 3 by 2.3e-5 m,
+// seeds 1, 2, 4-6 not at all; none of seeds 1-3 at H/64), so a check there tests a seed, not the regime.
 void check_no_opening(int elements_per_H) {
   const double f = 0.7;
   const Measurements m = run_case(0.2, f, elements_per_H, onset(0.2, f) + 1000.0);  // onset ~360 s
