@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whole `slidewave run`s as users and the pipeline pay them (setup, stick stage, the layer's steps, output):
+# Whole `slidewave run`s as users and the pipeline pay them (setup, the steps, output):
 # the paper's case nu = 0.2, f = 1.5, t_end = 1000 s (slip onset ~750 s, opening pulses after), default
 # config, at H/64, H/128, H/256 (lambda = 2H) and H/64 at lambda = 6H. Best of REPEATS wall times, with the
 # user time and peak memory of that run; with --before BIN also the same runs of another binary, alternated

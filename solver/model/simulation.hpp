@@ -13,7 +13,7 @@
 // Everything carried from step to step is in LoopState (model/loop_state.hpp).
 // With a deformable substrate (docs/substrate.md, model/substrate.hpp) the substrate takes the same step with
 // its own stepper (its bottom held), the contact problem is the pair's (q = q_L + S q_S, W = W_L + S W_S S),
-// its correction takes S r(n+1), and there is no stick stage.
+// and its correction takes S r(n+1).
 #include <atomic>
 #include <functional>
 

@@ -111,7 +111,7 @@ long first_slip_step(const RunRecord& rec) {
 // H/G + H_s/G_s exceeds the layer's by H_s G / (H G_s) = 2.5e-4, so before onset T/N moves by about that
 // fraction of its rise (0.05 f) and the onset step by 2.5e-4 of the ~100 steps to it: the same step. The
 // test asks for T/N within 1e-3 (absolute, T/N ~ 1.4) and the same first-slip step. No seed (amplitude 0):
-// both runs are then x-uniform until onset, the rigid one through its stick stage, the pair without one.
+// both runs are then x-uniform until onset.
 TEST(Substrate, StiffSubstrateReproducesTheRigidFlat) {
   const nlohmann::json base = {{"mesh", {{"elements_per_H", 8}}},
                                {"loading", {{"V0_over_cs", 1e-4}}},
