@@ -23,7 +23,6 @@ A number the text needs that the inputs lack is an error (exit 2) naming the mac
 Only selection and formatting happen here; every value comes from the inputs.
 """
 import argparse
-import json
 import math
 import statistics
 import sys
@@ -31,6 +30,7 @@ from collections import Counter
 
 from numbers_tex import MACRO_NAMES, render
 from analysis.core.atomic import write_file
+from analysis.core.json_file import read_json_object
 from table_io import InputError, read_rows
 from table_io import label as table_label
 
@@ -107,19 +107,6 @@ def cell_list(cells):
 
 
 # ---------------------------------------------------------------- inputs
-
-def read_summary(path):
-    try:
-        with open(path) as stream:
-            data = json.load(stream)
-    except OSError as err:
-        raise InputError(f"{path}: cannot read ({err.strerror})") from None
-    except json.JSONDecodeError as err:
-        raise InputError(f"{path}: not valid JSON ({err})") from None
-    if not isinstance(data, dict):
-        raise InputError(f"{path}: expected a JSON object")
-    return data
-
 
 def finite(value):
     return isinstance(value, float) and math.isfinite(value)
@@ -276,7 +263,7 @@ def sweep_macros(role, parameter, rows, reference_cell, path):
 
 
 def all_macros(args):
-    summary = read_summary(args.summary)
+    summary = read_json_object(args.summary)
     runs = read_rows(args.runs, ("energy_balance_error",))
     grid_rows = read_rows(args.grid, GRID_COLUMNS)
     one_per_cell(grid_rows, args.grid)

@@ -34,6 +34,7 @@ from typing import Any, Iterable
 
 from analysis.core import table_render
 from analysis.core.errors import InputError
+from analysis.core.json_file import read_json_object
 from analysis.core.table_csv import csv_text, format_cell, parse_table
 from analysis.core.table_render import Column
 from analysis.tables import table1_tex
@@ -62,15 +63,7 @@ def _number(value: Any) -> float:
 def load_metrics(path: str | Path) -> dict[str, Any]:
     """One metrics.json; InputError unless it is a JSON object with numeric nu, f and a celerity key
     (number or null)."""
-    try:
-        with open(path) as stream:
-            metrics = json.load(stream)
-    except OSError as err:
-        raise InputError(f"{path}: cannot read metrics ({err.strerror})") from None
-    except json.JSONDecodeError as err:
-        raise InputError(f"{path}: not valid JSON ({err})") from None
-    if not isinstance(metrics, dict):
-        raise InputError(f"{path}: metrics must be a JSON object")
+    metrics = read_json_object(path)
     missing = [key for key in ("nu", "f", "celerity") if key not in metrics]
     if missing:
         raise InputError(f"{path}: metrics lack key(s) {', '.join(missing)}")

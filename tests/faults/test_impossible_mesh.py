@@ -55,14 +55,20 @@ def test_check_prints_the_estimate(tmp_path):
     assert "memory estimate" in result.stderr and "Delassus" in result.stderr, result.stderr
 
 
-def test_sigterm_during_the_setup_ends_the_run_at_once(tmp_path):
-    # H/256 at lambda 6H: about 1.1 GiB and several seconds of setup (dense LDLT of a 3072 x 3072 W).
+def start_a_long_setup(tmp_path):
+    """A run of H/256 at lambda 6H (about 1.1 GiB and several seconds of setup: the dense LDLT of a
+    3072 x 3072 W), one second into its setup."""
     config = write(tmp_path, {"mesh": {"elements_per_H": 256}, "geometry": {"lambda_over_H": 6},
                               "time": {"t_end": 5.0}, "output": {"progress": "never"}})
     process = subprocess.Popen([str(solver_or_skip()), "run", str(config), "-o", str(tmp_path / "run.h5")],
                                stderr=subprocess.PIPE, text=True, preexec_fn=limited(6))
     time.sleep(1.0)
     assert process.poll() is None, "the run ended within a second"
+    return process
+
+
+def test_sigterm_during_the_setup_ends_the_run_at_once(tmp_path):
+    process = start_a_long_setup(tmp_path)
     assert not (tmp_path / "run.partial.h5").exists(), "the setup took under a second: use a larger mesh"
     sent = time.monotonic()
     process.terminate()
@@ -76,12 +82,7 @@ def test_sigterm_during_the_setup_ends_the_run_at_once(tmp_path):
 
 
 def test_sigkill_during_the_setup_leaves_no_partial_file(tmp_path):
-    config = write(tmp_path, {"mesh": {"elements_per_H": 256}, "geometry": {"lambda_over_H": 6},
-                              "time": {"t_end": 5.0}, "output": {"progress": "never"}})
-    process = subprocess.Popen([str(solver_or_skip()), "run", str(config), "-o", str(tmp_path / "run.h5")],
-                               stderr=subprocess.PIPE, text=True, preexec_fn=limited(6))
-    time.sleep(1.0)
-    assert process.poll() is None, "the run ended within a second"
+    process = start_a_long_setup(tmp_path)
     process.kill()
     process.communicate(timeout=120)
     # The lock file stays after kill -9 (unlocked; it names the killed run), nothing else.
