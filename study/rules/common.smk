@@ -2,6 +2,7 @@
 # the files each sweep's target builds. The logic lives in study/*.py (tested in tests/pipeline/).
 
 import functools
+import inspect
 import json
 import re
 from pathlib import Path
@@ -233,3 +234,17 @@ def flutter_nu():
     lo, hi, n = theory["flutter_nu_min"], theory["flutter_nu_max"], theory["flutter_nu_count"]
     return [lo + i * (hi - lo) / (n - 1) for i in range(n)]
 
+
+# The rules with `run:` (measure, aggregate: study/in_process.py) are meant to run in threads of this
+# process. Snakemake 7 runs them so with --force-use-threads (and always on a cluster node); without
+# it, each would start a new Snakemake, which parses this workflow again (~1.5 s of CPU per job).
+# Hence the option is set here for every call (a Snakemake without it is left as it is).
+def _force_use_threads(execute):
+    def execute_with_threads(*args, **kwargs):
+        kwargs["force_use_threads"] = True
+        return execute(*args, **kwargs)
+    return execute_with_threads
+
+
+if "force_use_threads" in inspect.signature(workflow.execute).parameters:
+    workflow.execute = _force_use_threads(workflow.execute)

@@ -1,6 +1,10 @@
 # One run: simulate (its config.json and `slidewave run`) -> measure, in results/runs/<point>-<digest>/
 # (logs in its logs/), shared by every sweep that declares the same run (study/rules/common.smk).
 
+from study import in_process
+
+localrules: measure
+
 if "SLIDEWAVE_BIN" not in os.environ:
     SOLVER_SOURCES = sorted(str(p.relative_to(REPO)) for p in (REPO / "solver").rglob("*") if p.is_file())
 
@@ -48,9 +52,9 @@ rule simulate:
 
 
 rule measure:
-    """`python3 -m analysis measure`: onset, celerity, opening, inversion, category of one run."""
+    """`python3 -m analysis measure` (onset, celerity, opening, inversion, category of one run), run by
+    the Snakemake process itself (study/in_process.py): no Python start-up per run."""
     input: "results/runs/{run}/run.h5"
     output: "results/runs/{run}/metrics.json"
     log: "results/runs/{run}/logs/measure.log"
-    resources: mem_mb=2000, runtime=10
-    shell: "{PYTHON:q} -m analysis measure {input:q} -o {output:q} > {log:q} 2>&1"
+    run: in_process.measure(input[0], output[0], log[0])
