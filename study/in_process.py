@@ -5,8 +5,9 @@ overhead"). The same functions as `python3 -m analysis measure|aggregate` (analy
 files are the same; the line the command prints goes to the job's log, and so does an error, which
 then fails the job.
 
-Snakemake runs such jobs in threads of its own process: these functions print nothing and change
-no process-wide state (working directory, standard streams).
+Snakemake runs such jobs in threads of its own process: these functions print nothing and leave
+the working directory and the standard streams alone (the analysis's atomic writes read the umask by
+setting it and setting it back, harmless between threads that all write with the same umask).
 """
 
 from __future__ import annotations
