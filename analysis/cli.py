@@ -34,50 +34,66 @@ def _refuse_input_as_output(output: Path, inputs: list[Path]) -> None:
                              "output path (nothing was written)")
 
 
-def _measure(args: argparse.Namespace) -> int:
+def measure_file(run_path: Path, output: Path, *, threshold_rel: float | None = None,
+                 window_length: float | None = None, major_duration: float | None = None,
+                 allow_incomplete: bool = False) -> str:
+    """`measure`: one run.h5 -> metrics JSON; returns the line the command prints. Also called by
+    the pipeline inside the Snakemake process (study/in_process.py)."""
     from analysis.core.atomic import write_file
     from analysis.core.io import load_run
     from analysis.metrics.measure import Settings, measure_run
 
-    _refuse_input_as_output(args.output, [args.run])
-    settings = Settings(threshold_rel=args.threshold, window_length=args.window,
-                        major_duration=args.major_duration)
+    _refuse_input_as_output(output, [run_path])
+    given = {"threshold_rel": threshold_rel, "window_length": window_length, "major_duration": major_duration}
+    settings = Settings(**{key: value for key, value in given.items() if value is not None})
     try:
         settings.check()
     except ValueError as err:
         raise InputError(str(err)) from None
-    run = load_run(args.run)
+    run = load_run(run_path)
     # An interrupted run stopped for a reason that has nothing to do with the physics; its
     # metrics would look like a result (a contact failure is a physical outcome, measured).
-    if run.end_reason == "interrupted" and not args.allow_incomplete:
-        raise InputError(f"{args.run}: the run was interrupted (end_reason 'interrupted', "
+    if run.end_reason == "interrupted" and not allow_incomplete:
+        raise InputError(f"{run_path}: the run was interrupted (end_reason 'interrupted', "
                          "complete = 0): its metrics would not be a result; resume or rerun it, "
                          "or pass --allow-incomplete to measure it anyway")
     metrics = measure_run(run, settings)
-    write_file(args.output, json.dumps(metrics, indent=2, allow_nan=False) + "\n")
+    write_file(output, json.dumps(metrics, indent=2, allow_nan=False) + "\n")
     c, xc = metrics["celerity"], metrics["celerity_xcorr"]
-    print(f"{args.run}: celerity "
-          + ("undefined (" + metrics["celerity_reason"] + ")" if c is None else
-             f"{c:+.4f} m/s (cross-correlation {xc if xc is None else format(xc, '+.4f')})")
-          + f", regime {metrics['regime']}, category {metrics['category']}, "
-          f"min T/N {metrics['min_T_over_N']:.3f}"
-          + ("" if metrics["complete"] else f", INCOMPLETE ({metrics['end_reason']})")
-          + f" -> {args.output}")
+    return (f"{run_path}: celerity "
+            + ("undefined (" + metrics["celerity_reason"] + ")" if c is None else
+               f"{c:+.4f} m/s (cross-correlation {xc if xc is None else format(xc, '+.4f')})")
+            + f", regime {metrics['regime']}, category {metrics['category']}, "
+            f"min T/N {metrics['min_T_over_N']:.3f}"
+            + ("" if metrics["complete"] else f", INCOMPLETE ({metrics['end_reason']})")
+            + f" -> {output}")
+
+
+def _measure(args: argparse.Namespace) -> int:
+    print(measure_file(args.run, args.output, threshold_rel=args.threshold, window_length=args.window,
+                       major_duration=args.major_duration, allow_incomplete=args.allow_incomplete))
     return 0
 
 
-def _aggregate(args: argparse.Namespace) -> int:
+def aggregate_files(metrics_paths: list[Path], reference_path: Path, output: Path, tolerance: float,
+                    select: list[str] = ()) -> str:
+    """`aggregate`: metrics files -> the tables in folder `output`; returns the line the command
+    prints. Also called by the pipeline inside the Snakemake process (study/in_process.py)."""
     from analysis.core.atomic import write_files
     from analysis.tables import aggregate as agg
     from analysis.tables.reference import read_reference
 
-    reference = read_reference(args.reference)
-    _refuse_input_as_output(args.output, list(args.metrics) + [args.reference])
-    metrics = [agg.load_metrics(path) for path in args.metrics]
-    table_metrics = agg.select(metrics, agg.parse_selection(args.select))
-    files, summary = agg.aggregate(metrics, table_metrics, reference, args.tolerance)
-    write_files({args.output / name: text for name, text in files.items()})
-    print(agg.summary_line(summary) + f" -> {args.output}")
+    reference = read_reference(reference_path)
+    _refuse_input_as_output(output, list(metrics_paths) + [reference_path])
+    metrics = [agg.load_metrics(path) for path in metrics_paths]
+    table_metrics = agg.select(metrics, agg.parse_selection(list(select)))
+    files, summary = agg.aggregate(metrics, table_metrics, reference, tolerance)
+    write_files({output / name: text for name, text in files.items()})
+    return agg.summary_line(summary) + f" -> {output}"
+
+
+def _aggregate(args: argparse.Namespace) -> int:
+    print(aggregate_files(args.metrics, args.reference, args.output, args.tolerance, args.select))
     return 0
 
 

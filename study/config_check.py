@@ -11,6 +11,8 @@ anything.
 
 from __future__ import annotations
 
+import copy
+import functools
 import math
 import os
 import sys
@@ -24,8 +26,15 @@ SCHEMA_PATH = Path(__file__).with_name("config.schema.yaml")
 
 
 def load_schema(path: str | Path = SCHEMA_PATH) -> dict:
+    """The schema (a copy: callers may change it). Parsed once per process: every `points_from_csv`
+    sweep checks its rows against it, and the Snakefile is parsed at the start of every Snakemake call."""
+    return copy.deepcopy(_parsed_schema(str(path)))
+
+
+@functools.lru_cache(maxsize=None)
+def _parsed_schema(path: str) -> dict:
     with open(path) as stream:
-        return yaml.safe_load(stream)
+        return yaml.load(stream, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
 
 
 def _resolve(sub: dict, schema: dict) -> dict:

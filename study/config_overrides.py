@@ -48,8 +48,10 @@ def clashes(overrides: Mapping, study: Mapping, prefix: str = "") -> list[str]:
 
 def check_overrides(overrides: Mapping, study_config_path: str | Path) -> None:
     """Raises ConfigOverrideError listing every override whose type clashes with the study config."""
+    if not overrides:  # nothing to check: spares parsing the study config at every Snakemake start
+        return
     with open(study_config_path) as stream:
-        study = yaml.safe_load(stream) or {}
+        study = yaml.load(stream, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)) or {}
     messages = clashes(overrides, study)
     if messages:
         raise ConfigOverrideError(

@@ -61,6 +61,11 @@ def run_config(spec: dict) -> dict:
     return config
 
 
+def config_json_text(config: dict) -> str:
+    """config.json's text: what the solver reads and what names a run's folder (study/rules/common.smk)."""
+    return json.dumps(config, indent=2) + "\n"
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--spec", required=True, help="the point's specification (JSON text)")
@@ -68,7 +73,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     config = run_config(json.loads(args.spec))
     args.output.parent.mkdir(parents=True, exist_ok=True)
-    args.output.write_text(json.dumps(config, indent=2) + "\n")
+    args.output.write_text(config_json_text(config))
     print(f"wrote {args.output}: t_end = {config['time']['t_end']:.1f} s, "
           f"stop_after_opening = {config['time']['stop_after_opening']}", file=sys.stderr)
     return 0

@@ -2,14 +2,17 @@
 # the files each sweep's target builds. The logic lives in study/*.py (tested in tests/pipeline/).
 
 import functools
+import inspect
 import json
 import re
 from pathlib import Path
 
 REPO = Path(workflow.basedir).resolve()  # on sys.path (the Snakefile's folder)
 from study import resources as study_resources
+from study import run_store
 from study import sweeps as study_sweeps
-from study.make_run_config import run_config
+from study.make_run_config import config_json_text, run_config
+from snakemake.exceptions import WorkflowError
 
 # Scripts run as `-m study.*`, `-m analysis` and figures/*.py import from the repository root,
 # also when --directory puts the results elsewhere.
@@ -18,6 +21,7 @@ os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, [str(REPO), os.environ.g
 wildcard_constraints:
     sweep="[A-Za-z][A-Za-z0-9_]*",
     point="nu[^/]+",
+    run=run_store.RUN_ID_PATTERN,
     field="slip_velocity|opening|state",
 
 FIGURE_EXTS = (".png", ".pdf")
@@ -41,11 +45,13 @@ def sweep_spec(sweep):
 
 
 def run_dir(sweep, point):
-    return f"results/{sweep}/{point}"
+    """The folder of a sweep's point: results/runs/<point>-<digest>, shared by every sweep whose point
+    resolves to the same solver configuration (`run_id`)."""
+    return f"{run_store.RUNS_DIR}/{run_id(sweep, point)}"
 
 
 def run_files(sweep, filename, names=None):
-    """results/<sweep>/<point>/<filename> for the given (default: all) points of a sweep."""
+    """<run folder>/<filename> for the given (default: all) points of a sweep."""
     return [f"{run_dir(sweep, name)}/{filename}" for name in (names or points(sweep))]
 
 
@@ -66,6 +72,41 @@ def run_spec(sweep, point):
         "solver": _deep_merge(config["solver"], spec.get("solver", {})),
         "snapshot_offsets_transits": spec.get("snapshot_offsets_transits", []),
     }
+
+
+# Runs are stored by what they compute (study/run_store.py): a point that several sweeps declare with
+# the same configuration (table1_ci, table1's published cells and seed 1 of table1_ensemble; the
+# paper's reference case in half the one-parameter sweeps) is one folder, computed once. The solver
+# build is not in the name: it is an input of every run (a newer binary reruns it), so a folder holds
+# the current build's run, and run.h5 records the version that wrote it.
+RUN_OWNERS = {}  # run id -> (sweep, point) of the first sweep seen to declare it
+
+
+@functools.lru_cache(maxsize=None)
+def run_config_text(sweep, point):
+    """The config.json of one point (study/make_run_config.py), as written into its run folder."""
+    return config_json_text(run_config(run_spec(sweep, point)))
+
+
+@functools.lru_cache(maxsize=None)
+def run_id(sweep, point):
+    """The name of a point's run folder: equal for equal configurations."""
+    identity = run_store.run_id(point, run_config_text(sweep, point))
+    RUN_OWNERS.setdefault(identity, (sweep, point))
+    return identity
+
+
+def run_owner(identity):
+    """(sweep, point) of a run folder's name, from every declared sweep (a job of its own, e.g. on a
+    cluster node, has not looked at the sweeps yet)."""
+    if identity not in RUN_OWNERS:
+        for sweep in config["sweeps"]:
+            for point in points(sweep):
+                run_id(sweep, point)
+    if identity not in RUN_OWNERS:
+        raise WorkflowError(f"results/runs/{identity}: no sweep of the study declares this run "
+                            "(its point or its configuration changed since it was made)")
+    return RUN_OWNERS[identity]
 
 
 @functools.lru_cache(maxsize=None)
@@ -192,3 +233,18 @@ def flutter_nu():
     theory = config["theory"]
     lo, hi, n = theory["flutter_nu_min"], theory["flutter_nu_max"], theory["flutter_nu_count"]
     return [lo + i * (hi - lo) / (n - 1) for i in range(n)]
+
+
+# The rules with `run:` (measure, aggregate: study/in_process.py) are meant to run in threads of this
+# process. Snakemake 7 runs them so with --force-use-threads (and always on a cluster node); without
+# it, each would start a new Snakemake, which parses this workflow again (~1.5 s of CPU per job).
+# Hence the option is set here for every call (a Snakemake without it is left as it is).
+def _force_use_threads(execute):
+    def execute_with_threads(*args, **kwargs):
+        kwargs["force_use_threads"] = True
+        return execute(*args, **kwargs)
+    return execute_with_threads
+
+
+if "force_use_threads" in inspect.signature(workflow.execute).parameters:
+    workflow.execute = _force_use_threads(workflow.execute)

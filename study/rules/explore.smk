@@ -4,7 +4,7 @@
 #
 # The point (checked by the schema's `point`: key names and ranges) takes every other parameter from
 # `defaults` (the study's default mesh and shear rate). It becomes the sweep `explore`, so the usual
-# rules run it (configure, simulate, measure, aggregate, space-time maps, T/N); this file adds the
+# rules run it (simulate, measure, aggregate, space-time maps, T/N); this file adds the
 # point's place against the phase diagram and a one-page summary, results/explore/summary.html.
 # Included after the sweep targets of the Snakefile: `explore` is a target of its own.
 
@@ -42,7 +42,7 @@ rule explore_phase:
     """The explored point's category against the published Table-1 cells and the flutter wedge."""
     input:
         script=figure_script("explore_phase"),
-        metrics=lambda wc: f"results/explore/{explore_point_name()}/metrics.json",
+        metrics=lambda wc: f"{run_dir(EXPLORE, explore_point_name())}/metrics.json",
         reference=repo_path(config["reference"]["table"]),
         flutter="results/theory/flutter.txt",
     output: multiext("results/explore/figures/explore_phase", *FIGURE_EXTS)
@@ -57,7 +57,7 @@ rule explore_summary:
     """One page: the point, its metrics, its place in the phase diagram, T/N and the space-time maps."""
     input:
         script=repo_path("study/scripts/explore_summary.py"),
-        metrics=lambda wc: f"results/explore/{explore_point_name()}/metrics.json",
+        metrics=lambda wc: f"{run_dir(EXPLORE, explore_point_name())}/metrics.json",
         phase="results/explore/figures/explore_phase.png",
         tn="results/explore/figures/tn_curves.png",
         maps=lambda wc: [f"results/explore/figures/spacetime_{field}_{explore_point_name()}.png"

@@ -10,8 +10,8 @@ rule fig_spacetime:
     """Fig. 2a,b and 4c-f: space-time map of slip velocity, opening or contact state."""
     input:
         script=figure_script("spacetime"),
-        run="results/{sweep}/{point}/run.h5",
-        metrics="results/{sweep}/{point}/metrics.json",
+        run=lambda wc: f"{run_dir(wc.sweep, wc.point)}/run.h5",
+        metrics=lambda wc: f"{run_dir(wc.sweep, wc.point)}/metrics.json",
     output: multiext("results/{sweep}/figures/spacetime_{field}_{point}", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/spacetime_{field}_{point}"
     log: "results/{sweep}/logs/fig_spacetime_{field}_{point}.log"
@@ -57,7 +57,7 @@ rule fig_snapshots:
     """Fig. 3: material velocity in the deformed layer, slip velocity and opening at the snapshot times."""
     input:
         script=figure_script("snapshots"),
-        run="results/{sweep}/{point}/run.h5",
+        run=lambda wc: f"{run_dir(wc.sweep, wc.point)}/run.h5",
     output: multiext("results/{sweep}/figures/snapshots_{point}", *FIGURE_EXTS)
     params: prefix="results/{sweep}/figures/snapshots_{point}"
     log: "results/{sweep}/logs/fig_snapshots_{point}.log"

@@ -1,6 +1,9 @@
-# One run: configure -> simulate -> measure, in results/<sweep>/<point>/ (logs in its logs/).
+# One run: simulate (its config.json and `slidewave run`) -> measure, in results/runs/<point>-<digest>/
+# (logs in its logs/), shared by every sweep that declares the same run (study/rules/common.smk).
 
-localrules: configure
+from study import in_process
+
+localrules: measure
 
 if "SLIDEWAVE_BIN" not in os.environ:
     SOLVER_SOURCES = sorted(str(p.relative_to(REPO)) for p in (REPO / "solver").rglob("*") if p.is_file())
@@ -19,42 +22,39 @@ if "SLIDEWAVE_BIN" not in os.environ:
             " && cmake --build build --target slidewave -j{threads:q}) > {log:q} 2>&1"
 
 
-rule configure:
-    """Write the solver configuration of one point (study/make_run_config.py)."""
-    output: "results/{sweep}/{point}/config.json"
-    params: spec=lambda wc: json.dumps(run_spec(wc.sweep, wc.point), sort_keys=True)
-    log: "results/{sweep}/{point}/logs/configure.log"
-    shell: "{PYTHON:q} -m study.make_run_config --spec {params.spec:q} -o {output:q} 2> {log:q}"
-
-
 rule simulate:
-    """`slidewave run`: stages 1-3 of one point, interface fields and global series in run.h5."""
-    input:
-        config="results/{sweep}/{point}/config.json",
-        solver=SOLVER,
-    output: "results/{sweep}/{point}/run.h5"
-    log: "results/{sweep}/{point}/logs/simulate.log"
-    benchmark: "results/{sweep}/{point}/logs/simulate.benchmark.tsv"
+    """One run in its folder results/runs/<point>-<digest> (study/rules/common.smk): its config.json
+    (the resolved configuration, study/make_run_config.py, passed from the Snakefile so that no
+    process starts for it), then `slidewave run`: stages 1-3, interface fields and global series in
+    run.h5."""
+    input: solver=SOLVER
+    output:
+        config="results/runs/{run}/config.json",
+        run="results/runs/{run}/run.h5",
+    params: config=lambda wc: run_config_text(*run_owner(wc.run))
+    log: "results/runs/{run}/logs/simulate.log"
+    benchmark: "results/runs/{run}/logs/simulate.benchmark.tsv"
     threads: 1
     resources:
-        mem_mb=lambda wc: run_estimate(wc.sweep, wc.point)["mem_mb"],
-        runtime=lambda wc: run_estimate(wc.sweep, wc.point)["runtime"],
+        mem_mb=lambda wc: run_estimate(*run_owner(wc.run))["mem_mb"],
+        runtime=lambda wc: run_estimate(*run_owner(wc.run))["runtime"],
     # Exit codes of `slidewave run` (docs/contracts.md): 0 complete; 1 contact failure, run.h5 written
     # with complete = 0 (a physical outcome: kept and measured as what it is, so that one hard point
     # cannot stop a sweep). Anything else fails the job and leaves no output: 2 bad input, 3 interrupted
     # (only RUN.partial.h5 and the checkpoint beside run.h5, which the next attempt resumes from),
     # 4 I/O error, a crash. An interrupted run is therefore never an output of this rule; the trap keeps
     # it so also when the job itself is signalled (Snakemake stopped, a scheduler's time limit).
-    shell: "trap \"rm -f {output:q}; exit 143\" TERM INT; status=0; {input.solver:q} run {input.config:q} -o {output:q} --threads {threads:q} --resume"
+    shell: "trap \"rm -f {output.run:q}; exit 143\" TERM INT; printf %s {params.config:q} > {output.config:q};"
+           " status=0; {input.solver:q} run {output.config:q} -o {output.run:q} --threads {threads:q} --resume"
            " > {log:q} 2>&1 || status=$?;"
-           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output:q} ]; }}"
-           " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log:q}; rm -f {output:q}; exit 1; }}"
+           " [ $status -eq 0 ] || {{ [ $status -eq 1 ] && [ -f {output.run:q} ]; }}"
+           " || {{ echo \"simulate: slidewave run exited $status: no result\" >> {log:q}; rm -f {output.run:q}; exit 1; }}"
 
 
 rule measure:
-    """`python3 -m analysis measure`: onset, celerity, opening, inversion, category of one run."""
-    input: "results/{sweep}/{point}/run.h5"
-    output: "results/{sweep}/{point}/metrics.json"
-    log: "results/{sweep}/{point}/logs/measure.log"
-    resources: mem_mb=2000, runtime=10
-    shell: "{PYTHON:q} -m analysis measure {input:q} -o {output:q} > {log:q} 2>&1"
+    """`python3 -m analysis measure` (onset, celerity, opening, inversion, category of one run), run by
+    the Snakemake process itself (study/in_process.py): no Python start-up per run."""
+    input: "results/runs/{run}/run.h5"
+    output: "results/runs/{run}/metrics.json"
+    log: "results/runs/{run}/logs/measure.log"
+    run: in_process.measure(input[0], output[0], log[0])

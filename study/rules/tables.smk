@@ -22,8 +22,8 @@ def aggregate_select(wildcards):
 
 
 rule aggregate:
-    """`python3 -m analysis aggregate`: one sweep's metrics (or the study's, `aggregated_points`) ->
-    Table 1 (csv/md/tex), summary, all metrics."""
+    """`python3 -m analysis aggregate`, run by the Snakemake process itself (study/in_process.py): one
+    sweep's metrics (or the study's, `aggregated_points`) -> Table 1 (csv/md/tex), summary, all metrics."""
     input:
         metrics=lambda wc: [f"{run_dir(sweep, name)}/metrics.json"
                             for name, (sweep, _) in aggregated_points(wc.sweep).items()],
@@ -34,9 +34,9 @@ rule aggregate:
         tolerance=config["reference"]["tolerance"],
         select=aggregate_select,
     log: "results/{sweep}/logs/aggregate.log"
-    shell:
-        "{PYTHON:q} -m analysis aggregate {input.metrics:q} --reference {input.reference:q}"
-        " --tolerance {params.tolerance:q} {params.select:q} -o {params.directory:q} > {log:q} 2>&1"
+    run:
+        in_process.aggregate(list(input.metrics), input.reference, params.tolerance, params.select,
+                             params.directory, log[0])
 
 
 rule compare:

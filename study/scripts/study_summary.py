@@ -3,8 +3,8 @@
 
     study/scripts/study_summary.py --sweep quick [--results results] [--snakemake-log LOG]
 
-Prints the runs of the sweep (and how many of them this Snakemake call made, from its log's job
-listing), the published Table-1 cells the sweep ran and how many it reproduces (the aggregate's
+Prints the runs of the sweep (the rows of its all_metrics.csv; the runs live in results/runs/, shared
+between sweeps; and how many of them this Snakemake call made, from its log's job listing), the published Table-1 cells the sweep ran and how many it reproduces (the aggregate's
 table1.csv and summary.json: nothing is recomputed), and the path of the sweep's report. A file the
 sweep should have and lacks is an error (exit 2), so a broken study never ends on a clean summary.
 """
@@ -28,14 +28,16 @@ def runs_made(log: Path | None) -> int | None:
 def summary_lines(sweep: str, results: Path, log: Path | None) -> list[str]:
     table_dir = results / sweep / "table"
     table, summary, report = table_dir / "table1.csv", table_dir / "summary.json", results / sweep / "report.html"
-    for path in (table, summary, report):
+    runs = table_dir / "all_metrics.csv"
+    for path in (table, summary, runs, report):
         if not path.is_file():
             raise FileNotFoundError(f"{path} is missing: the study did not finish")
-    n_runs = sum(1 for _ in (results / sweep).glob("*/metrics.json"))
+    with open(runs, newline="") as stream:
+        n_runs = sum(1 for _ in csv.DictReader(stream))
     made = runs_made(log)
     made_text = ("" if made is None else " (all made now)" if made == n_runs else
                  " (all up to date)" if made == 0 else f" ({made} made now, the others up to date)")
-    lines = [f"runs:    {n_runs} in {results / sweep}/{made_text}"]
+    lines = [f"runs:    {n_runs} in {results / 'runs'}/ (listed in {runs}){made_text}"]
     tolerance = json.loads(summary.read_text())["tolerance"]
     with open(table, newline="") as stream:
         rows = [r for r in csv.DictReader(stream) if (r.get("category") or "").strip()]

@@ -41,7 +41,7 @@ def snakemake_command(work, config_file):
 
 
 def point_dirs(work):
-    return sorted(p for p in (work / "results" / SWEEP).glob("nu*") if p.is_dir())
+    return sorted(p for p in (work / "results" / "runs").glob("nu*") if p.is_dir())
 
 
 def wait_until_simulating(work, process, timeout=300.0):

@@ -3,6 +3,7 @@ into a command is shell-quoted. A copy of the tracked files in `.../my dir/slide
 `.../my dir/work`: a dry run of the CI sweep, then one real measure and space-time figure of a
 synthetic run (no solver run)."""
 
+import re
 import shutil
 import subprocess
 
@@ -31,12 +32,14 @@ def test_the_pipeline_runs_from_a_checkout_path_with_a_space(tmp_path, study_con
         return snakemake(work, *args, snakefile=checkout / "Snakefile", env={"SLIDEWAVE_BIN": "/bin/false"},
                          timeout=600)
 
-    counts = job_counts(run("-n", "ci").stdout)
+    planned = run("-n", "ci").stdout
+    counts = job_counts(planned)
     assert counts["simulate"] == 2 and counts["fig_spacetime"] == 1
 
     from study.sweeps import sweep_points
     (name,) = [n for n, p in sweep_points(study_config, "ci", REPO).items() if p["f"] == 1.5]
-    run_file = work / "results" / "ci" / name / "run.h5"
+    (folder,) = set(re.findall(rf"results/runs/{re.escape(name)}-[0-9a-f]+", planned))  # study/run_store.py
+    run_file = work / folder / "run.h5"
     run_file.parent.mkdir(parents=True)
     write_run(run_file, paper_case())
     figure = work / "results" / "ci" / "figures" / f"spacetime_state_{name}.png"

@@ -46,7 +46,7 @@ def test_a_hostile_csv_row_is_refused_naming_file_row_and_column(tmp_path):
     work.mkdir()
     rows.write_text("nu,f,integration\n0.2,1.5,reduced\n0.2,1.5,reduced;touch PWNED;#\n")
     extra.write_text(f"sweeps:\n  evil:\n    points_from_csv: {rows}\n    products: []\n")
-    err = refused(work, "evil", "--until", "configure", "--configfile", str(extra))
+    err = refused(work, "evil", "--until", "simulate", "--configfile", str(extra))
     assert (f"error: config key `sweeps.evil`: {rows}, row 3, column integration: 'reduced;touch PWNED;#' is "
             "not allowed; allowed: one of reduced, full, reduced_pure") in err
 

@@ -15,7 +15,7 @@ def test_ci_sweep_end_to_end(tmp_path):
     work = tmp_path / "work"
     snakemake(work, "-c2", "ci", env={"SLIDEWAVE_BIN": str(solver)})
 
-    run = work / "results" / "ci" / POINT
+    (run,) = (work / "results" / "runs").glob(f"{POINT}-*")  # the run's folder (study/run_store.py)
     config = json.loads((run / "config.json").read_text())
     assert config["mesh"]["elements_per_H"] == 16 and config["time"]["stop_after_opening"] > 0
     assert (run / "run.h5").stat().st_size > 0

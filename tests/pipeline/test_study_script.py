@@ -20,8 +20,9 @@ FAKE_SNAKEMAKE = """#!/bin/sh
 # Stands in for Snakemake: a long job listing, then the quick sweep's files.
 i=0
 while [ $i -lt 300 ]; do echo "rule measure: input: a very long list of files $i"; i=$((i+1)); done
-for p in a b; do echo "rule simulate:"; mkdir -p results/quick/$p; echo '{}' > results/quick/$p/metrics.json; done
+for p in a b; do echo "rule simulate:"; done
 mkdir -p results/quick/table
+printf 'metrics_file\nresults/runs/a/metrics.json\nresults/runs/b/metrics.json\n' > results/quick/table/all_metrics.csv
 cat "$FAKE_TABLE1" > results/quick/table/table1.csv
 echo '{"tolerance": 0.05}' > results/quick/table/summary.json
 echo '<html></html>' > results/quick/report.html
@@ -59,7 +60,7 @@ def test_one_screen_ending_with_the_summary_and_the_report(tmp_path):
     assert [line.split()[0] for line in lines[:3]] == ["setup", "build", "study"]
     assert "28 jobs" in lines[2] and "logs/study/snakemake.log" in lines[2]
     text = result.stdout
-    assert "runs:    2 in results/quick/ (all made now)" in text
+    assert "runs:    2 in results/runs/ (listed in results/quick/table/all_metrics.csv) (all made now)" in text
     assert "Table 1: 2 published cells run, 2 with a measured celerity, 1 reproduced (within 5%" in text
     assert f"report:  {root / 'results' / 'quick' / 'report.html'}" in text
     assert lines[-1].startswith("time:")

@@ -3,6 +3,7 @@ checks, and that a new point adds exactly its own jobs."""
 
 import json
 import re
+from pathlib import PurePosixPath
 
 import pytest
 import yaml
@@ -27,8 +28,7 @@ def dry(workdir, *args, **kwargs):
 
 def test_ci_target(workdir):
     _, counts = dry(workdir, "ci")
-    assert counts == {"aggregate": 1, "ci": 1, "configure": 2, "fig_spacetime": 1, "measure": 2,
-                      "simulate": 2}
+    assert counts == {"aggregate": 1, "ci": 1, "fig_spacetime": 1, "measure": 2, "simulate": 2}
 
 
 def test_quick_is_the_default_target(workdir):
@@ -49,29 +49,42 @@ def jobs(output):
     return found
 
 
-def simulations_per_sweep(output):
-    """{sweep: number of simulate jobs} from a dry run's job listing."""
-    counts = {}
-    for rule, fields in jobs(output):
-        if rule == "simulate":
-            sweep = fields["wildcards"].split("sweep=")[1].split(",")[0]
-            counts[sweep] = counts.get(sweep, 0) + 1
-    return counts
+def files(text):
+    """The paths of a job's `input:` or `output:` field (comma-separated, as Snakemake prints them)."""
+    return [path.strip() for path in text.split(",") if path.strip()]
+
+
+def run_folders(paths):
+    """The run folders (results/runs/<point>-<digest>) of some paths."""
+    return {str(PurePosixPath(path).parent) for path in paths if path.startswith("results/runs/")}
 
 
 def test_all_builds_every_sweep_the_report_and_the_paper(study_config):
     # In the checkout: the paper is built from paper/ (not copied under --directory).
     result, counts = dry(REPO, "all", "--forceall")
-    # Every sweep `all` reaches simulates each of its points once (counts from study/config.yaml), and
-    # it reaches the study, the paper's method variants and the ensembles of its envelope.
-    simulations = simulations_per_sweep(result.stdout)
-    assert simulations == {sweep: len(sweep_points(study_config, sweep, REPO)) for sweep in simulations}
+    listed = jobs(result.stdout)
+    # Each run is simulated once, whatever the number of sweeps that declare it (same configuration,
+    # same folder), and every sweep `all` reaches tabulates each of its points.
+    simulated = [run_folders(files(fields["output"])) for rule, fields in listed if rule == "simulate"]
+    assert all(len(folder) == 1 for folder in simulated)
+    simulated = set().union(*simulated)
+    assert len(simulated) == counts["simulate"] == counts["measure"]
+    tables = {files(fields["output"])[0].split("/")[1]: run_folders(files(fields["input"]))
+              for rule, fields in listed if rule == "aggregate"}
+    sweeps = {sweep: folders for sweep, folders in tables.items() if sweep != "study"}
+    assert {sweep: len(folders) for sweep, folders in sweeps.items()} == {
+        sweep: len(sweep_points(study_config, sweep, REPO)) for sweep in sweeps}
+    assert set().union(*sweeps.values()) == simulated
+    # The shared runs (issue 25): table1_ci's cells are table1's and seed 1 of table1_ensemble, the
+    # H/128 cells seed 1 of table1_h128_ensemble, the paper's case is in most one-parameter sweeps.
+    assert sum(map(len, sweeps.values())) - len(simulated) >= 2 * 38
+    # It reaches the study, the paper's method variants and the ensembles of its envelope.
     paper = study_config["paper"]
     envelope = paper.get("envelope", {})
     expected = {*study_config["study"], *paper["variants"].values(),
                 *(value for key, value in envelope.items() if "ensemble" in key and isinstance(value, str))}
-    assert expected <= set(simulations)
-    assert counts["aggregate"] == len(simulations) + 1  # and the study's table
+    assert expected <= set(sweeps)
+    assert counts["aggregate"] == len(sweeps) + 1  # and the study's table
     assert counts["paper_figure"] == len(paper["figures"]) and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == len(paper["tables"])
     # What the energy residual is: three small runs with the HHT dissipation booked, one generator.
@@ -89,9 +102,20 @@ def test_all_builds_every_sweep_the_report_and_the_paper(study_config):
     assert counts["fig_spacetime"] == 4 + 2 + 3 + 3 + 2 + 4 * 3 and counts["fig_convergence"] == 3 + 1 + 4
 
 
+def test_a_point_of_several_sweeps_runs_once(workdir):
+    """table1_ci's 38 runs are table1's published cells and seed 1 of table1_ensemble (issue 25)."""
+    _, counts = dry(workdir, "table1", "table1_ensemble", "table1_ci")
+    assert counts["simulate"] == counts["measure"] == 98 + 8 * 38 - 38
+    _, counts = dry(workdir, "table1_h128", "table1_h128_ensemble")
+    assert counts["simulate"] == 3 * 38
+    # A sweep that changes the run (its length) has runs of its own at the same point.
+    _, counts = dry(workdir, "long", "shear_rate")
+    assert counts["simulate"] == 1 + 5
+
+
 def test_one_target_per_sweep(workdir):
-    _, counts = dry(workdir, "period", "mesh")
-    assert counts["simulate"] == 6 and counts["fig_pulse_spacing"] == 1 and counts["fig_convergence"] == 1
+    _, counts = dry(workdir, "period", "mesh")  # 3 + 3 points, the paper's case (lambda 2H, H/64) in both
+    assert counts["simulate"] == 5 and counts["fig_pulse_spacing"] == 1 and counts["fig_convergence"] == 1
     _, counts = dry(workdir, "phase_diagram")
     assert counts["simulate"] == 98 and counts["fig_phase_diagram"] == 1 and counts["flutter"] == 1
 
@@ -111,8 +135,8 @@ def test_figures_never_depend_on_solver(workdir):
 
 
 def inputs(fields):
-    """The input files of a job of a dry run's listing (comma-separated paths, as Snakemake prints them)."""
-    return [path.strip() for path in fields.get("input", "").split(",") if path.strip()]
+    """The input files of a job of a dry run's listing."""
+    return files(fields.get("input", ""))
 
 
 def write_ratchet(directory, resolution, minimum=0):

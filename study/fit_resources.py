@@ -1,0 +1,210 @@
+"""Refit the cost model of study/resources.py from the Snakemake benchmark files of a campaign.
+
+    /usr/bin/python3 -m study.fit_resources [RESULTS ...] [-o study/resources.json]
+
+Every run folder under RESULTS (default `results/runs`) that holds config.json, run.h5 and
+logs/simulate.benchmark.tsv is one measurement: the job's time and peak memory `max_rss`
+(Snakemake's benchmark), the mesh and period (config.json) and the steps the solver really made
+(run.h5's `n_steps_done`: a run that stops after the opening makes fewer than its cap). The time is
+what the run takes on a core of its own: the wall time `s` times the share of a core the job got
+until Snakemake's last sample of it (`cpu_time`, the CPU seconds then, over the time of that sample:
+on a machine shared with other work a run may get a fraction of a core), or `s` itself for a job
+too short to have been sampled. Fitted:
+
+    wall_s = setup_s + n_steps * ms_per_step_h32 (n / 32)^mesh_exponent (lambda_over_H / 2)^period_exponent / 1000
+    max_rss_mb = base_mb + mb_per_element * n^2 lambda_over_H
+
+the time by least squares on log(wall) with each (mesh, period) weighing the same however many runs
+it has (a campaign has hundreds of H/64 runs and a few at H/256) and a soft-L1 loss (a run slowed
+by a loaded machine does not pull the fit), the memory by
+least squares on the runs long enough for Snakemake to have sampled the solver (its first sample
+is taken when the job starts, the next 0.5 s later: a shorter job records its shell). An exponent
+that the campaign cannot see (one mesh, or one period) keeps its value in the current file. The
+constants are written to OUTPUT (what study/resources.py reads), with what they were fitted from;
+a table per mesh and period of measured / fitted goes to stdout. Commit the file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from study import resources
+
+#: Shortest job (s) whose peak memory is the solver's, not the shell's (Snakemake samples every 0.5 s).
+MIN_SAMPLED_WALL_S = 1.0
+#: Snakemake 7 samples a job when it starts, every 0.5 s for 15 s, then every 30 s (snakemake/benchmark.py).
+SAMPLE_INTERVAL_S, DENSE_SAMPLING_S, SPARSE_INTERVAL_S = 0.5, 15.0, 30.0
+
+
+def read_benchmark(path: Path) -> dict[str, float]:
+    """The first row of a Snakemake benchmark TSV as numbers (`s`, `max_rss`, ...)."""
+    with open(path, newline="") as stream:
+        row = next(csv.DictReader(stream, delimiter="\t"))
+    return {key: float(value) for key, value in row.items() if key != "h:m:s" and value not in ("", "NA")}
+
+
+def steps_done(run_file: Path) -> int | None:
+    """run.h5's `n_steps_done` attribute, or None when the run does not record it."""
+    import h5py
+
+    with h5py.File(run_file, "r") as run:
+        value = run.attrs.get("n_steps_done")
+    return None if value is None else int(value)
+
+
+def last_sample_time(wall: float) -> float:
+    """When Snakemake last sampled a job of this wall time (s after its start)."""
+    if wall < DENSE_SAMPLING_S:
+        return SAMPLE_INTERVAL_S * math.floor(wall / SAMPLE_INTERVAL_S)
+    return DENSE_SAMPLING_S + SPARSE_INTERVAL_S * math.floor((wall - DENSE_SAMPLING_S) / SPARSE_INTERVAL_S)
+
+
+def core_seconds(record: dict[str, float]) -> float:
+    """The job's time on a core of its own: wall x the share of a core it got until its last sample."""
+    sampled, cpu = last_sample_time(record["s"]), record.get("cpu_time", 0.0)
+    if sampled < MIN_SAMPLED_WALL_S or cpu <= 0:
+        return record["s"]
+    return record["s"] * min(1.0, cpu / sampled)
+
+
+def measurements(roots: list[Path]) -> list[dict]:
+    """One dict per run folder under `roots`: mesh, period, elements, steps, wall_s (on a core of its
+    own, `core_seconds`), max_rss_mb."""
+    found, seen = [], set()
+    for root in roots:
+        for bench in sorted(root.glob("**/logs/simulate.benchmark.tsv")):
+            folder = bench.parent.parent.resolve()
+            config_file, run_file = folder / "config.json", folder / "run.h5"
+            if folder in seen or not config_file.is_file() or not run_file.is_file():
+                continue
+            seen.add(folder)
+            steps = steps_done(run_file)
+            if not steps:
+                continue
+            config = json.loads(config_file.read_text())
+            n, period = config["mesh"]["elements_per_H"], config["geometry"]["lambda_over_H"]
+            record = read_benchmark(bench)
+            found.append({"run": str(folder), "n": n, "period": period, "elements": n * n * period,
+                          "steps": steps, "wall_s": core_seconds(record), "max_rss_mb": record.get("max_rss", math.nan)})
+    return found
+
+
+def fit_time(runs: list[dict], prior: dict) -> dict:
+    """setup_s, ms_per_step_h32 and the exponents that the runs can see (the others from `prior`)."""
+    free_mesh = len({r["n"] for r in runs}) > 1
+    free_period = len({r["period"] for r in runs}) > 1
+    n = np.array([r["n"] for r in runs], float)
+    period = np.array([r["period"] for r in runs], float)
+    steps = np.array([r["steps"] for r in runs], float)
+    wall = np.array([r["wall_s"] for r in runs], float)
+    group_size = {}
+    for r in runs:
+        group_size[(r["n"], r["period"])] = group_size.get((r["n"], r["period"]), 0) + 1
+    weight = np.array([group_size[(r["n"], r["period"])] ** -0.5 for r in runs])
+
+    def unpack(x):
+        mesh_exp = x[2] if free_mesh else prior["mesh_exponent"]
+        period_exp = x[3] if free_period else prior["period_exponent"]
+        return x[0], math.exp(x[1]), mesh_exp, period_exp
+
+    def residuals(x):
+        setup, ms, mesh_exp, period_exp = unpack(x)
+        model = setup + steps * ms * (n / 32.0) ** mesh_exp * (period / 2.0) ** period_exp / 1000.0
+        return weight * (np.log(model) - np.log(wall))
+
+    start = [min(prior["setup_s"], wall.min() / 2), math.log(prior["ms_per_step_h32"]),
+             prior["mesh_exponent"], prior["period_exponent"]]
+    lower, upper = [0.0, -np.inf, 0.0, 0.0], [np.inf, np.inf, 6.0, 6.0]
+    solution = least_squares(residuals, start, bounds=(lower, upper), loss="soft_l1", f_scale=0.1)
+    setup, ms, mesh_exp, period_exp = unpack(solution.x)
+    return {"setup_s": setup, "ms_per_step_h32": ms, "mesh_exponent": mesh_exp, "period_exponent": period_exp}
+
+
+def fit_memory(runs: list[dict], prior: dict) -> dict:
+    """base_mb and mb_per_element by least squares (both >= 0) on the runs Snakemake sampled."""
+    sampled = [r for r in runs if r["wall_s"] >= MIN_SAMPLED_WALL_S and math.isfinite(r["max_rss_mb"])]
+    if not sampled:
+        return dict(prior)
+    elements = np.array([r["elements"] for r in sampled], float)
+    rss = np.array([r["max_rss_mb"] for r in sampled], float)
+    if len(set(elements)) > 1:
+        slope, base = np.polyfit(elements, rss, 1)
+        if slope < 0 or base < 0:
+            slope, base = (max(slope, 0.0), float(np.mean(rss - max(slope, 0.0) * elements)))
+    else:
+        slope = prior["mb_per_element"]
+        base = float(np.mean(rss - slope * elements))
+    return {"base_mb": max(base, 0.0), "mb_per_element": slope}
+
+
+def ratio_table(runs: list[dict], constants: dict) -> list[str]:
+    """Median and extreme measured / fitted wall time and memory per (mesh, period)."""
+    lines = [f"{'H/h':>5} {'lambda/H':>8} {'runs':>5} {'time meas/fit: median':>22} {'min':>6} {'max':>6}"
+             f" {'memory meas/fit: median':>24} {'max':>6}"]
+    groups: dict[tuple, list[dict]] = {}
+    for r in runs:
+        groups.setdefault((r["n"], r["period"]), []).append(r)
+    for (n, period), group in sorted(groups.items()):
+        time = [r["wall_s"] / resources.seconds(n, period, r["steps"], constants) for r in group]
+        memory = [r["max_rss_mb"] / resources.memory_mb(n, period, constants) for r in group
+                  if r["wall_s"] >= MIN_SAMPLED_WALL_S and math.isfinite(r["max_rss_mb"])]
+        memory_text = (f"{np.median(memory):>24.2f} {max(memory):>6.2f}" if memory else f"{'-':>24} {'-':>6}")
+        lines.append(f"{n:>5} {period:>8g} {len(group):>5} {np.median(time):>22.2f} {min(time):>6.2f}"
+                     f" {max(time):>6.2f} {memory_text}")
+    return lines
+
+
+def fit(runs: list[dict], prior: dict) -> dict:
+    """The constants study/resources.py reads, with what they were fitted from."""
+    constants = {"time": fit_time(runs, prior["time"]), "memory": fit_memory(runs, prior["memory"])}
+    worst = max(r["wall_s"] / resources.seconds(r["n"], r["period"], r["steps"], constants) for r in runs)
+    constants["fitted_from"] = {
+        "runs": len(runs),
+        "meshes": sorted({r["n"] for r in runs}),
+        "periods": sorted({r["period"] for r in runs}),
+        "memory_runs": sum(r["wall_s"] >= MIN_SAMPLED_WALL_S for r in runs),
+        "max_time_measured_over_fit": round(worst, 3),
+    }
+    return constants
+
+
+def rounded(value):
+    """Constants with 4 significant digits (a readable committed file)."""
+    if isinstance(value, dict):
+        return {key: rounded(item) for key, item in value.items()}
+    if isinstance(value, float):
+        return float(f"{value:.4g}")
+    return value
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("results", nargs="*", type=Path, default=[Path("results/runs")],
+                        help="folders searched for run folders (default: results/runs)")
+    parser.add_argument("-o", "--output", type=Path, default=resources.CONSTANTS_FILE,
+                        help=f"constants file to write (default: {resources.CONSTANTS_FILE})")
+    args = parser.parse_args(argv)
+    runs = measurements(args.results)
+    if len(runs) < 3:
+        print(f"fit_resources: error: {len(runs)} run folders with config.json, run.h5 (n_steps_done) and "
+              f"logs/simulate.benchmark.tsv under {', '.join(map(str, args.results))}; need at least 3",
+              file=sys.stderr)
+        return 2
+    prior = resources.load_constants(args.output if args.output.is_file() else resources.CONSTANTS_FILE)
+    constants = rounded(fit(runs, prior))
+    args.output.write_text(json.dumps(constants, indent=2) + "\n")
+    print("\n".join(ratio_table(runs, constants)))
+    print(f"wrote {args.output} from {len(runs)} runs")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
