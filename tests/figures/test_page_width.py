@@ -97,7 +97,7 @@ def report_page(tmp_path, sweep="table1"):
                                                          for k, v in row.items()}))
         runs.append({"name": folder.name, "dir": str(folder)})
     manifest = {"title": "page width", "tolerance": CONFIG["reference"]["tolerance"], "sections": [
-        {"sweep": sweep, "description": "", "table": str(tables_from_committed(tmp_path) / sweep / "table" / "table1.csv"),
+        {"sweep": sweep, "description": "", "table": str(ROOT / "study" / "results" / sweep / "table1.csv"),
          "cells": sorted({(float(r["nu"]), float(r["f"])) for r in rows}), "comparison": str(tmp_path / "cmp.txt"),
          "figures": [], "runs": runs}]}
     (tmp_path / "cmp.txt").write_text("compare: PASS\n")
