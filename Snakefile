@@ -26,14 +26,19 @@ from study.sweeps import typed_numbers
 check_overrides(config, os.path.join(workflow.basedir, "study/config.yaml"))
 configfile: os.path.join(workflow.basedir, "study/config.yaml")
 config.update(typed_numbers(config))  # --config passes nested numbers as strings
+# --config passes booleans as strings too; anything but true/false stays a string that the schema refuses.
+config.update({key: {"true": True, "false": False}.get(value, value) for key, value in config.items()
+               if key == "from_committed" and isinstance(value, str)})
 # Every problem on one line naming the key and the allowed values (study/config_check.py).
 exit_on_errors(schema_errors(config, load_schema()))
 validate(config, "study/config.schema.yaml")  # fills the defaults
 exit_on_errors(reference_errors(config, workflow.basedir))
 
-# Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary.
+# Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary: none when the report is
+# built from the committed tables (study/rules/publish.smk), so that nothing can plan a run.
 PYTHON = os.environ.get("SLIDEWAVE_PYTHON", "/usr/bin/python3")
-SOLVER = os.environ.get("SLIDEWAVE_BIN", "build/slidewave")
+FROM_COMMITTED = config["from_committed"]
+SOLVER = "no-solver-from-committed-tables" if FROM_COMMITTED else os.environ.get("SLIDEWAVE_BIN", "build/slidewave")
 
 include: "study/rules/common.smk"
 include: "study/rules/simulate.smk"
@@ -43,6 +48,7 @@ include: "study/rules/limits.smk"
 include: "study/rules/figures.smk"
 include: "study/rules/report.smk"
 include: "study/rules/movies.smk"
+include: "study/rules/publish.smk"
 
 
 rule quick:

@@ -1,5 +1,5 @@
 """Command line: `/usr/bin/python3 -m analysis COMMAND ...`, the one entry of every analysis command:
-measure, aggregate, compare, score-rules, flutter-boundary, bimaterial, and the confidence studies
+measure, aggregate, compare, score-rules, energy-evidence, flutter-boundary, bimaterial, and the confidence studies
 ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds (analysis/confidence/commands.py).
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
@@ -141,6 +141,19 @@ def _score_rules(args: argparse.Namespace) -> int:
     return 0
 
 
+def _energy_evidence(args: argparse.Namespace) -> int:
+    from analysis.core.atomic import write_file
+    from analysis.metrics.energy_evidence import ROLES, energy_evidence
+
+    paths = {role: getattr(args, role) for role, *_ in ROLES}
+    _refuse_input_as_output(args.output, list(paths.values()))
+    evidence, case = energy_evidence({role: str(path) for role, path in paths.items()})
+    document = {"case": case, "runs": evidence, "inputs": {role: str(path) for role, path in paths.items()}}
+    write_file(args.output, json.dumps(document, indent=2, allow_nan=False) + "\n")
+    print(f"energy evidence of {', '.join(str(path) for path in paths.values())} -> {args.output}")
+    return 0
+
+
 def _flutter_boundary(args: argparse.Namespace) -> int:
     try:
         from analysis.theory.flutter import flutter_boundary
@@ -249,6 +262,16 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--out-dir", type=Path,
                    help="also write DIR/rule_scores.csv, .md and .tex (the report's table)")
     p.set_defaults(handler=_score_rules)
+
+    p = commands.add_parser("energy-evidence",
+                            help="three runs with output.energy_decomposition = hht -> the energy-balance "
+                                 "evidence of the report (JSON; analysis/metrics/energy_evidence.py)")
+    from analysis.metrics.energy_evidence import ROLES
+    for role, zero, weighting in ROLES:
+        p.add_argument(f"--{role.replace('_', '-')}", dest=role, type=Path, required=True, metavar="RUN_H5",
+                       help="run with hht_alpha = 0" if zero else f"run with hht_alpha > 0, {weighting} weighting")
+    p.add_argument("-o", "--output", type=Path, required=True, help="JSON to write")
+    p.set_defaults(handler=_energy_evidence)
 
     p = commands.add_parser("flutter-boundary",
                             help="print 'nu f_lower f_upper' of the flutter wedge, one line per nu")

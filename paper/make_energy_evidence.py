@@ -2,19 +2,19 @@
 """Write generated/energy_evidence.tex: what the energy-balance residual of the study's runs is,
 measured on the reference case (docs/energy-balance.md), as LaTeX macros.
 
-    paper/make_energy_evidence.py --alpha-zero a0.h5 --alpha a01.h5 --alpha-end a01_end.h5 -o energy_evidence.tex
+    paper/make_energy_evidence.py energy_evidence.json -o energy_evidence.tex
 
-Three runs of the same case with `output.energy_decomposition = hht`; the numbers are those of
-analysis/metrics/energy_evidence.py (which reads the runs through analysis.core.io), formatted here.
-A run without the decomposition, with the wrong alpha or weighting, or of another case than the
-others is an error (exit 2) naming the file.
+The JSON is what `python3 -m analysis energy-evidence` measured on three runs of the same case made with
+`output.energy_decomposition = hht` (analysis/metrics/energy_evidence.py); this script only formats it. A
+JSON without a role or a number is an error (exit 2) naming the file and the key.
 """
 import argparse
+import json
 import math
 import sys
 
 from analysis.core.atomic import write_file
-from analysis.metrics.energy_evidence import ROLES, TERMS, energy_evidence
+from analysis.metrics.energy_evidence import TERMS
 from numbers_tex import ENERGY_MACRO_NAMES, render
 from table_io import InputError
 
@@ -55,22 +55,37 @@ def macros_of(evidence, case):
     return {name: macros[name] for name in ENERGY_MACRO_NAMES}
 
 
+def read_evidence(path):
+    """(evidence by role, case) of an `analysis energy-evidence` JSON; InputError naming what is missing."""
+    try:
+        with open(path, encoding="utf-8") as file:
+            document = json.load(file)
+        runs, case = document["runs"], document["case"]
+    except (OSError, ValueError, KeyError, TypeError) as err:
+        raise InputError(f"{path}: not an energy-evidence JSON of `python3 -m analysis energy-evidence` "
+                         f"({type(err).__name__}: {err})") from None
+    for role in SUFFIX:
+        needed = ["flowed", "residual"]
+        if role != "alpha_zero":
+            needed += ["residual_end", "dissipation_end", "ratio", "closure", *(f"term_{t}" for t in TERMS)]
+        missing = [key for key in needed if not isinstance(runs.get(role, {}).get(key), (int, float))]
+        if missing:
+            raise InputError(f"{path}: runs.{role} lacks the number(s) {', '.join(missing)}")
+    return runs, case
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    for role, zero, weighting in ROLES:
-        parser.add_argument(f"--{role.replace('_', '-')}", required=True, metavar="RUN_H5",
-                            help="run with hht_alpha = 0" if zero else f"run with hht_alpha > 0, {weighting} weighting")
+    parser.add_argument("evidence", help="energy_evidence.json of `python3 -m analysis energy-evidence`")
     parser.add_argument("-o", "--output", required=True, help="energy_evidence.tex to write")
     args = parser.parse_args(argv)
     try:
-        macros = macros_of(*energy_evidence({role: getattr(args, role) for role, *_ in ROLES}))
+        macros = macros_of(*read_evidence(args.evidence))
     except InputError as err:
         print(f"make_energy_evidence.py: error: {err}", file=sys.stderr)
         return 2
-    write_file(args.output, render(macros, [getattr(args, role) for role, *_ in ROLES],
-                                   script="paper/make_energy_evidence.py"))
+    write_file(args.output, render(macros, [args.evidence], script="paper/make_energy_evidence.py"))
     return 0
-
 
 if __name__ == "__main__":
     sys.exit(main())

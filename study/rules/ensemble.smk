@@ -118,7 +118,7 @@ rule paper_how_sure:
     the paper, `all` runs the ensemble sweeps (and the finer one) and the variant sweeps. The rule
     scores: rule `rule_scores`."""
     input:
-        script="paper/make_how_sure.py",
+        script=repo_path("paper/make_how_sure.py"),
         ensemble=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble_summary.json",
         ensemble_table=f"results/{config['paper'].get('envelope', {}).get('ensemble', 'none')}/table/ensemble.tex",
         envelope="results/envelope/envelope_summary.json",

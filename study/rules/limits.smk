@@ -129,7 +129,7 @@ rule paper_how_sure_limits:
     """The generated inputs of the limits subsections of paper/how_sure.tex: their numbers and
     sentences (paper/make_how_sure_limits.py), tables and figures."""
     input:
-        script="paper/make_how_sure_limits.py",
+        script=repo_path("paper/make_how_sure_limits.py"),
         mesh="results/limits/mesh_limit_summary.json",
         timestep="results/limits/timestep_limit_summary.json",
         timeline="results/limits/timeline_summary.json",

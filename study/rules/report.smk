@@ -3,7 +3,7 @@
 REPORT_SCRIPT = repo_path("study/scripts/report.py")
 
 localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper, energy_evidence_config,
-    paper_energy_evidence, paper_claims
+    paper_energy_evidence, paper_claims, energy_evidence
 
 
 def report_inputs(sweeps):
@@ -52,6 +52,28 @@ rule report:
 
 
 PAPER_PDF = "paper/reproduction.pdf"
+PAPER_SOURCES = ("reproduction.tex", "how_sure.tex")
+# Figures drawn from the runs' HDF5 rather than from tables: left out (the report frames a note in their
+# place) when the report is built from the committed tables.
+RUN_FIGURES = ("spacetime", "snapshots", "tn_curves", "tn_aligned")
+
+
+def paper_figures():
+    """paper/generated/<name>.pdf of config `paper.figures` that this build can draw."""
+    names = [name for name, entry in config["paper"]["figures"].items()
+             if not (FROM_COMMITTED and entry["figure"].startswith(RUN_FIGURES))]
+    return [f"paper/generated/{name}.pdf" for name in names]
+
+
+if Path.cwd().resolve() != REPO:
+    localrules: paper_source
+
+    rule paper_source:
+        """Under --directory: a LaTeX source of the report copied beside its generated files."""
+        input: repo_path("paper/{name}")
+        output: "paper/{name}"
+        wildcard_constraints: name="|".join(re.escape(name) for name in PAPER_SOURCES)
+        shell: "cp {input:q} {output:q}"
 
 
 def paper_figure_source(wildcards):
@@ -93,8 +115,8 @@ rule paper_numbers:
     """Every number the paper quotes (paper/make_numbers.py) and its Table 1 (paper/make_table1.py),
     from the sweeps named in config `paper.numbers`, read at the `defaults` nu and f."""
     input:
-        numbers_script="paper/make_numbers.py",
-        table_script="paper/make_table1.py",
+        numbers_script=repo_path("paper/make_numbers.py"),
+        table_script=repo_path("paper/make_table1.py"),
         summary="results/study/table/summary.json",
         runs="results/study/table/all_metrics.csv",
         table="results/study/table/table1.csv",
@@ -120,7 +142,7 @@ rule paper_numbers:
 rule paper_variants:
     """The method-variant table of the reproduction report (paper/make_variants.py), config `paper.variants`."""
     input:
-        script="paper/make_variants.py",
+        script=repo_path("paper/make_variants.py"),
         summaries=[f"results/{sweep}/table/summary.json" for sweep in config["paper"]["variants"].values()],
     output: "paper/generated/variants.tex"
     params:
@@ -144,8 +166,8 @@ rule paper_claims:
     """The verdict on each claim of the paper (study/reference/claims.json) and the report's
     Conclusions drawn from them (paper/make_claims.py)."""
     input:
-        script="paper/make_claims.py",
-        rules=["analysis/tables/claims.py", "analysis/tables/claim_support.py"],  # the verdicts make_claims.py renders
+        script=repo_path("paper/make_claims.py"),
+        rules=[repo_path("analysis/tables/claims.py"), repo_path("analysis/tables/claim_support.py")],  # the verdicts make_claims.py renders
         claims=repo_path("study/reference/claims.json"),
         tables=lambda wc: list(claim_tables().values()),
         meshes=lambda wc: [f"results/{sweep}/table/table1.csv" for sweep in numbers_spec().get("meshes", {}).values()],
@@ -165,7 +187,7 @@ rule paper_claims:
         " > {log:q} 2>&1"
 
 
-ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of paper/make_energy_evidence.py
+ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of `analysis energy-evidence`
 
 
 def energy_evidence_config(name):
@@ -200,16 +222,24 @@ rule energy_evidence_run:
     shell: "{input.solver:q} run {input.config:q} -o {output:q} --threads 1 > {log:q} 2>&1"
 
 
+rule energy_evidence:
+    """`python3 -m analysis energy-evidence`: the energy-balance residual of the three runs, at alpha = 0
+    and against the HHT dissipation measured term by term at the study's alpha (a committed table)."""
+    input: expand("results/energy_evidence/{name}.h5", name=ENERGY_RUNS)
+    output: "results/energy_evidence/energy_evidence.json"
+    params: runs=lambda wc, input: [w for name, path in zip(ENERGY_RUNS, input) for w in (f"--{name.replace('_', '-')}", path)]
+    log: "results/energy_evidence/logs/energy_evidence.log"
+    shell: "{PYTHON:q} -m analysis energy-evidence {params.runs:q} -o {output:q} > {log:q} 2>&1"
+
+
 rule paper_energy_evidence:
-    """The energy-balance evidence of the report (paper/make_energy_evidence.py): residual at alpha = 0,
-    residual against the HHT dissipation measured term by term at the study's alpha."""
+    """The energy-balance evidence of the report: paper/make_energy_evidence.py formats the JSON."""
     input:
-        script="paper/make_energy_evidence.py",
-        runs=expand("results/energy_evidence/{name}.h5", name=ENERGY_RUNS),
+        script=repo_path("paper/make_energy_evidence.py"),
+        evidence="results/energy_evidence/energy_evidence.json",
     output: "paper/generated/energy_evidence.tex"
-    params: runs=lambda wc, input: [w for name, path in zip(ENERGY_RUNS, input.runs) for w in (f"--{name.replace('_', '-')}", path)]
     log: "logs/paper_energy_evidence.log"
-    shell: "{PYTHON:q} {input.script:q} {params.runs:q} -o {output:q} > {log:q} 2>&1"
+    shell: "{PYTHON:q} {input.script:q} {input.evidence:q} -o {output:q} > {log:q} 2>&1"
 
 
 def paper_table_job(name):
@@ -217,11 +247,11 @@ def paper_table_job(name):
     each sweep contributes, the script's options, and the [(label, sweep)] sets."""
     spec = config["paper"]["tables"][name]
     if spec["resolution"]:
-        return dict(script="paper/make_resolution_table.py", table="table1.csv",
+        return dict(script=repo_path("paper/make_resolution_table.py"), table="table1.csv",
                     options=["--tolerance", config['reference']['tolerance']], sets=list(spec["sets"].items()))
     if not spec.get("columns"):
         raise ValueError(f"paper.tables.{name}: a sweep table needs `columns`")
-    return dict(script="paper/make_sweep_table.py", table="all_metrics.csv",
+    return dict(script=repo_path("paper/make_sweep_table.py"), table="all_metrics.csv",
                 options=["--columns", *spec["columns"]], sets=list(spec["sets"].items()))
 
 
@@ -243,25 +273,25 @@ rule paper_table:
 
 rule paper:
     """The LaTeX reproduction report (paper/reproduction.tex): every number, table and figure from
-    generated files. Built in the checkout (paper/ is not copied under --directory). Fails (and
+    generated files; under --directory from a copy of its sources there. Fails (and
     leaves no PDF) on content wider than the text, an undefined reference or a placeholder number
     of numbers.tex or energy_evidence.tex (paper/check_latex_log.py)."""
     input:
-        tex="paper/reproduction.tex",
-        check="paper/check_latex_log.py",
+        tex=[f"paper/{name}" for name in PAPER_SOURCES],
+        check=repo_path("paper/check_latex_log.py"),
         numbers="paper/generated/numbers.tex",
         table="paper/generated/table1.tex",
         variants="paper/generated/variants.tex",
         energy="paper/generated/energy_evidence.tex",
         claims="paper/generated/claims.tex",
         conclusions="paper/generated/conclusions.tex",
-        figures=expand("paper/generated/{name}.pdf", name=config["paper"]["figures"]),
+        figures=paper_figures(),
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
         how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/ensemble.smk
         how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/limits.smk
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:
-        "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd {input.tex:q}"
+        "(latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error -cd paper/reproduction.tex"
         " && {PYTHON:q} {input.check:q} paper/reproduction.log --numbers {input.numbers:q} --numbers {input.energy:q})"
         " > {log:q} 2>&1"

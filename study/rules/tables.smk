@@ -1,8 +1,8 @@
 # Sweep tables, comparison with the published Table 1, the CI reference check, the rule scores, the
-# flutter wedge, and the committed copy of the tables. The confidence studies (paper/how_sure.tex)
+# flutter wedge. What is committed of them: publish.smk. The confidence studies (paper/how_sure.tex)
 # are in ensemble.smk (seeds, method envelope) and limits.smk (mesh and time-step limits, timeline).
 
-localrules: aggregate, compare, reference_check, flutter, publish_table, publish_results, rule_scores
+localrules: aggregate, compare, reference_check, flutter, rule_scores
 
 
 def aggregated_points(sweep):
@@ -128,29 +128,3 @@ rule flutter:
     params: nu=[f"{nu:.6g}" for nu in flutter_nu()]
     log: "results/theory/logs/flutter.log"
     shell: "{PYTHON:q} -m analysis flutter-boundary --nu {params.nu:q} > {output:q} 2> {log:q}"
-
-
-# study/results/: the committed copy of the study's small tables (no HDF5), written only by this rule.
-PUBLISHED_TABLES = ("table1.csv", "summary.json", "all_metrics.csv")
-
-
-def published_sweeps():
-    """The sweeps whose tables study/results/ keeps: the paper's study, its merged table, the CI
-    reference check and the method variants, each once."""
-    sweeps = [*config["study"], "study", config["reference"]["check_sweep"], *config["paper"]["variants"].values()]
-    return list(dict.fromkeys(sweeps))
-
-
-rule publish_table:
-    """One table of a sweep copied into study/results/<sweep>/ (the committed results)."""
-    input: "results/{sweep}/table/{name}"
-    output: repo_path("study/results/{sweep}/{name}")
-    wildcard_constraints: name="|".join(re.escape(n) for n in PUBLISHED_TABLES)
-    log: "results/{sweep}/logs/publish_{name}.log"
-    shell: "cp {input:q} {output:q} 2> {log:q}"
-
-
-rule publish_results:
-    """`snakemake publish_results`: refresh study/results/ from results/ (runs whatever is missing:
-    the whole study, the variants and the CI sweep). Commit study/results/ afterwards."""
-    input: [repo_path(f"study/results/{sweep}/{name}") for sweep in published_sweeps() for name in PUBLISHED_TABLES]

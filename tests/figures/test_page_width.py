@@ -1,5 +1,5 @@
 """Both documents a reviewer reads stay within the page: the paper built from the committed
-study/results (paper/tables_from_published.py, then the paper scripts as the rules call them) and the
+study/results (scripts/report_from_committed.sh) and the
 HTML report of a real sweep, rendered to PNG (pdftoppm; headless Chromium screenshots of the HTML at
 1400 px and at a printed page's width). Content wider than the page leaves ink in the right margin; each check is shown
 to find it on a page built to overflow."""
@@ -13,7 +13,6 @@ import pytest
 import yaml
 from PIL import Image
 
-import synthetic
 from figure_support import PAPER, ROOT
 
 PDFTOPPM = shutil.which("pdftoppm")
@@ -55,55 +54,11 @@ def chromium(*args):
 
 # ------------------------------------------------------------------------------------------- paper
 
-def tables_from_committed(tmp_path):
-    """results/<sweep>/table/ of every committed sweep, aggregated again by the current analysis."""
-    results = tmp_path / "results"
-    results.mkdir()
-    run(sys.executable, PAPER / "tables_from_published.py", "--published", ROOT / "study" / "results",
-        "--reference", ROOT / CONFIG["reference"]["table"],
-        "--tolerance", CONFIG["reference"]["tolerance"], "-o", results)
-    return results
-
-
 def build_from_committed(tmp_path):
-    """paper/reproduction.pdf from study/results, the paper scripts called as study/rules/report.smk
-    calls them (figures are placeholders: the runs are not committed)."""
-    results = tables_from_committed(tmp_path)
-    paper = tmp_path / "paper"
-    shutil.copytree(PAPER, paper, ignore=shutil.ignore_patterns("generated", "*.pdf", "*.aux", "*.log"))
-    gen = paper / "generated"
-    gen.mkdir()
-
-    def table(sweep, name):
-        return results / sweep / "table" / name
-    spec = CONFIG["paper"]["numbers"]
-    sweeps = [a for role, sweep in spec["sweeps"].items()
-              for a in ("--sweep", role, synthetic.ROLES[role], table(sweep, "all_metrics.csv"))]
-    run(sys.executable, PAPER / "make_numbers.py", "--summary", table("study", "summary.json"),
-        "--runs", table("study", "all_metrics.csv"), "--grid", table(spec["grid"], "all_metrics.csv"),
-        "--table1", table("study", "table1.csv"), "--reference-cell", CONFIG["defaults"]["nu"],
-        CONFIG["defaults"]["f"], *sweeps, "-o", gen / "numbers.tex")
-    meshes = [f"{label}={table(sweep, 'table1.csv')}" for label, sweep in spec.get("meshes", {}).items()]
-    run(sys.executable, PAPER / "make_table1.py", table("study", "table1.csv"),
-        *[f"--other-mesh={m}" for m in meshes], "-o", gen / "table1.tex")
-    run(sys.executable, PAPER / "make_claims.py", "--claims", ROOT / "study/reference/claims.json",
-        "--tolerance", CONFIG["reference"]["tolerance"],
-        *[f"--table={name}={table(sweep, 'table1.csv' if name == 'table1' else 'all_metrics.csv')}"
-          for name, sweep in CONFIG["paper"]["claims"].items()],
-        *[f"--mesh-table={m}" for m in meshes], "-o", gen / "claims.tex", "--conclusions", gen / "conclusions.tex",
-        "--json", gen / "claims.json")
-    run(sys.executable, PAPER / "make_variants.py", *[f"{label}={table(sweep, 'summary.json')}" for label, sweep
-                                                     in CONFIG["paper"]["variants"].items()], "-o", gen / "variants.tex")
-    for name, spec in CONFIG["paper"]["tables"].items():
-        if spec.get("resolution"):
-            args = ["make_resolution_table.py", "--tolerance", CONFIG["reference"]["tolerance"],
-                    *[f"{label}={table(sweep, 'table1.csv')}" for label, sweep in spec["sets"].items()]]
-        else:
-            args = ["make_sweep_table.py", *[f"{label}={table(sweep, 'all_metrics.csv')}"
-                                             for label, sweep in spec["sets"].items()], "--columns", *spec["columns"]]
-        run(sys.executable, PAPER / args[0], *args[1:], "-o", gen / f"{name}.tex")
-    run("make", "-C", paper)  # fails on an overfull box (paper/check_latex_log.py)
-    return paper / "reproduction.pdf"
+    """The report built from study/results alone by scripts/report_from_committed.sh (figures drawn
+    from the runs are framed notes: the runs are not committed)."""
+    run("bash", ROOT / "scripts" / "report_from_committed.sh", tmp_path / "from_committed", timeout=1200)
+    return tmp_path / "from_committed" / "paper" / "reproduction.pdf"
 
 
 @needs_latex
@@ -142,7 +97,7 @@ def report_page(tmp_path, sweep="table1"):
                                                          for k, v in row.items()}))
         runs.append({"name": folder.name, "dir": str(folder)})
     manifest = {"title": "page width", "tolerance": CONFIG["reference"]["tolerance"], "sections": [
-        {"sweep": sweep, "description": "", "table": str(tables_from_committed(tmp_path) / sweep / "table" / "table1.csv"),
+        {"sweep": sweep, "description": "", "table": str(ROOT / "study" / "results" / sweep / "table1.csv"),
          "cells": sorted({(float(r["nu"]), float(r["f"])) for r in rows}), "comparison": str(tmp_path / "cmp.txt"),
          "figures": [], "runs": runs}]}
     (tmp_path / "cmp.txt").write_text("compare: PASS\n")

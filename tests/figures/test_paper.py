@@ -165,8 +165,11 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
     assert command(PAPER / "make_numbers.py", *numbers_args(data), "-o", gen / "numbers.tex").returncode == 0
     assert command(PAPER / "make_table1.py", data / "table1.csv",
                    "-o", gen / "table1.tex").returncode == 0
-    assert command(PAPER / "make_energy_evidence.py", *[a for name in synthetic.ENERGY_RUNS for a in (
-        f"--{name.replace('_', '-')}", data / f"energy_{name}.h5")], "-o", gen / "energy_evidence.tex").returncode == 0
+    assert subprocess.run([sys.executable, "-m", "analysis", "energy-evidence", *[str(a) for name in synthetic.ENERGY_RUNS
+                           for a in (f"--{name.replace('_', '-')}", data / f"energy_{name}.h5")],
+                           "-o", str(gen / "energy_evidence.json")], cwd=ROOT, capture_output=True).returncode == 0
+    assert command(PAPER / "make_energy_evidence.py", gen / "energy_evidence.json",
+                   "-o", gen / "energy_evidence.tex").returncode == 0
     assert command(PAPER / "make_variants.py", f"default={data / 'summary.json'}",
                    f"dt = 1 m / c_s={data / 'summary.json'}", "-o", gen / "variants.tex").returncode == 0
     assert r"$\Delta t$ = 1 m / $c_s$" in (gen / "variants.tex").read_text()  # symbols typeset

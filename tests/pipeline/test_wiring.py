@@ -88,7 +88,7 @@ def test_all_builds_every_sweep_the_report_and_the_paper(study_config):
     assert counts["paper_figure"] == len(paper["figures"]) and counts["paper"] == 1 and counts["report"] == 1
     assert counts["paper_table"] == len(paper["tables"])
     # What the energy residual is: three small runs with the HHT dissipation booked, one generator.
-    assert counts["energy_evidence_run"] == 3 and counts["paper_energy_evidence"] == 1
+    assert counts["energy_evidence_run"] == 3 and counts["energy_evidence"] == 1 and counts["paper_energy_evidence"] == 1
     # The verdict on each claim and the Conclusions, from sweeps the paper builds anyway (no extra run).
     assert counts["paper_claims"] == 1
     # How sure is Table 1: the seeds of the ensemble sweep, the method envelope, the section's inputs.
