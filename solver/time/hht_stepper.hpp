@@ -54,6 +54,9 @@ struct HHTState {
 };
 
 /// Effective matrix K_eff = M_ff / (beta dt^2) + (1 - alpha) K_ff.
+Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const Eigen::SparseMatrix<double>& M_ff,
+                                             const Eigen::SparseMatrix<double>& K_ff);
+/// The same, of the system's blocks.
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system);
 
 class HHTStepper {

@@ -14,7 +14,7 @@
 #include "model/simulation.hpp"
 #include "same_run_support.hpp"
 #include "test_support.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 namespace {
@@ -49,7 +49,7 @@ TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
           const Layer l = layer(n_x, n_y, integration, mass);
           ASSERT_EQ(l.model.mesh.n_x, n_x);
           const HHTCoefficients hht(0.1, l.model.d.dt);
-          const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * l.model.M_ff + (1 - hht.alpha) * l.model.K_ff;
+          const Eigen::SparseMatrix<double> K_eff = effective_matrix(hht, l.model.M_ff, l.model.K_ff);
           const std::string where = "n_x = " + std::to_string(n_x) + " n_y = " + std::to_string(n_y) + " " +
                                     testing::integration_name(integration) + " " + mass;
           const std::vector<std::pair<const char*, Eigen::SparseMatrix<double>>> matrices = {

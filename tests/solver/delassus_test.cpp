@@ -11,7 +11,7 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
 #include "test_support.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 namespace {
@@ -30,8 +30,7 @@ Tiny tiny_model(Integration integration, bool dynamic) {
   LayerModel model(config);
   const HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
   Eigen::SparseMatrix<double> K_eff =
-      dynamic ? Eigen::SparseMatrix<double>(hht.mass_factor() * model.M_ff + (1 - hht.alpha) * model.K_ff)
-              : model.K_ff;
+      dynamic ? effective_matrix(hht, model.M_ff, model.K_ff) : model.K_ff;
   return {config, std::move(model), std::move(K_eff)};
 }
 

@@ -41,7 +41,7 @@ LayerModel layer(int n_x, int n_y, Integration integration, const char* mass) {
 
 Eigen::SparseMatrix<double> K_eff_of(const LayerModel& m) {
   const HHTCoefficients hht(m.config.time.hht_alpha, m.d.dt);
-  return hht.mass_factor() * m.M_ff + (1 - hht.alpha) * m.K_ff;
+  return effective_matrix(hht, m.M_ff, m.K_ff);
 }
 
 TEST(SplitSolve, FreeAndLoadedHalvesMatchCholmod) {
