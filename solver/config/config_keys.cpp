@@ -132,7 +132,7 @@ std::vector<ConfigKey> make_table() {
              "contact pressure, ds/dt = -(abs(v)+pc_velocity)/pc_length (s - sigma), updated once per step "
              "(backward Euler, lagged); a node whose open/closed status cycles within one contact solve "
              "(grazing: no solution with a fixed bound) falls back to the Coulomb bound f r_y for that solve "
-             "(solver/contact/gauss_seidel.hpp)",
+             "(solver/contact/prakash_clifton.hpp)",
              [](auto& c) -> auto& { return c.friction.regularization; }),
       number("friction", "pc_length", open(0), unbounded, "m", "Prakash–Clifton slip length L",
              [](auto& c) -> auto& { return c.friction.pc_length; }),
@@ -169,7 +169,7 @@ std::vector<ConfigKey> make_table() {
       integer("contact", "max_iterations", 1, 100000000,
               "Gauss–Seidel sweeps per pass; a pass that misses the tolerance, or settles on a period-2 orbit, "
               "is followed by one under-relaxed pass (omega 0.5) of as many sweeps, after which the step is "
-              "an error (solver/contact/gauss_seidel.hpp)",
+              "an error (solver/contact/contact_solver.hpp)",
               [](auto& c) -> auto& { return c.contact.max_iterations; }),
       choice("contact", "all_stick", {{"exact", AllStick::exact}},
              "how a step whose nodes all stuck before is solved: first the exact all-stick solution "

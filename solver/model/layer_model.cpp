@@ -4,8 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contact/contact_solver.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/delassus.hpp"
-#include "contact/gauss_seidel.hpp"
 #include "fem/assembly.hpp"
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -78,7 +79,9 @@ PreloadState solve_preload(const LayerModel& model) {
     u.head(sub->n_free) = K_static_sub->solve(load);
     return u;
   };
-  GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
+  // The quasi-static stages slide under Coulomb's bound f r_y, whatever the law of the dynamics.
+  const ContactSolver contact_solver(
+      W, {c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h}, DelassusLayout::dense);
 
   // Contact displacements of the free (reaction-less) static response to the top displacement u_d.
   const auto free_contact_displacement = [&](const Eigen::VectorXd& u_d) -> Eigen::VectorXd {
@@ -91,7 +94,8 @@ PreloadState solve_preload(const LayerModel& model) {
     Eigen::VectorXd rhs = -(model.K_fd * u_d);
     Eigen::VectorXd q = free_contact_displacement(u_d);
     for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
-    const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, nullptr, state);
+    CoulombBounds bounds(c.friction.f);
+    const auto report = contact_solver.solve(q, bounds, r, state);
     if (!report.converged) throw std::runtime_error("preload: the quasi-static contact solve did not converge");
     iterations += report.iterations;
     Eigen::VectorXd u(model.n_free + model.n_top);

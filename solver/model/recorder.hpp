@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/gauss_seidel.hpp"
+#include "contact/contact_solver.hpp"
 #include "model/energy_ledger.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Independent oracles for the frictional contact problem  y = q + W r  (node k: y = (du_x, u_y),
-// r = (r_x, r_y)), shared by coulomb_local_test and gauss_seidel_test:
+// r = (r_x, r_y)), shared by coulomb_local_test and contact_solver_test:
 //  - signorini_coulomb_violations: the conditions checked directly on (r, y);
 //  - enumerate_solutions: brute force over the 4^n state combinations (open, stick, slip +, slip -),
 //    one linear system each, keeping every solution that satisfies all conditions.
