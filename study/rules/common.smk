@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 REPO = Path(workflow.basedir).resolve()  # on sys.path (the Snakefile's folder)
+from study import figure_kinds
 from study import resources as study_resources
 from study import sweeps as study_sweeps
 from study.make_run_config import run_config
@@ -97,7 +98,7 @@ def figure_files(sweep):
     spec = sweep_spec(sweep)
     files = []
     for kind in spec.get("products", []):
-        if kind in ("phase_diagram", "celerity_vs_nu", "deviation_map", "tn_curves", "tn_aligned", "pulse_spacing", "convergence"):
+        if kind in figure_kinds.PER_SWEEP:
             files += figure(sweep, kind)
         elif kind == "spacetime":
             for field in spec.get("maps", {}).get("fields", ["state"]):
