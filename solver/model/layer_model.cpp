@@ -111,7 +111,9 @@ PreloadState solve_preload(const LayerModel& model) {
 
   // Stage 1: compression, warm-started from the all-stick answer W r = -q (glued interface, exact
   // when the whole interface sticks): Gauss-Seidel then only verifies it, instead of needing hundreds
-  // of sweeps from zero that stop at the tolerance, not at round-off.
+  // of sweeps from zero that stop at the tolerance, not at round-off. The dense LDLT, not the time
+  // loop's AllStickSolution (contact/all_stick.hpp): that gives the same r rounded otherwise, which moves
+  // u_x_preshear in its 15th digit and every run by what that grows to after slip onset (measured).
   const Eigen::LDLT<Eigen::MatrixXd> W_ldlt = W.ldlt();
   const Eigen::VectorXd zero_contact = Eigen::VectorXd::Zero(n_c);
   const Eigen::VectorXd u_d1 = model.top_displacement(0, u_y_top);
