@@ -4,7 +4,8 @@
 // Gauss–Seidel (contact_solver.hpp) needs 9-27 sweeps to reach the same r to its tolerance (before slip
 // onset, most of a Table-1 run). That r solves the problem whenever every node of it is closed and inside
 // its friction bound (r_y >= 0, |r_x| <= the law's bound, contact/friction_bounds.hpp): the stick
-// conditions then hold at every node with y = 0 exactly. Otherwise it is not a solution and the step is left to Gauss–Seidel.
+// conditions then hold at every node with y = 0 exactly. Otherwise it is not a solution and the step is left to
+// Gauss–Seidel.
 //
 // W^{-1} of a block-circulant W is block-circulant too: its two generating columns (solved once, with
 // W's Cholesky factor) give every product through the same kernel as W's (periodic_residual).

@@ -81,8 +81,8 @@ GaussSeidelReport ContactSolver::sweep_until_converged(const Eigen::VectorXd& q,
       // Back where it was two sweeps ago (to 1e-3 of this sweep's change) on kCycleSweeps sweeps in a
       // row: a period-2 orbit that will never converge, so stop now instead of at max_iterations.
       // A converging iteration cannot show this (its changes would have to alternate without decaying).
-      const bool returned = report.iterations >= kCycleWatchFrom + 2 &&
-                            (r - r_two_back).cwiseAbs().maxCoeff() <= 1e-3 * max_change;
+      const bool returned =
+          report.iterations >= kCycleWatchFrom + 2 && (r - r_two_back).cwiseAbs().maxCoeff() <= 1e-3 * max_change;
       n_cycle_sweeps = returned ? n_cycle_sweeps + 1 : 0;
       if (n_cycle_sweeps >= kCycleSweeps) break;
       r_two_back.swap(r_previous);

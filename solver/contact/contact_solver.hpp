@@ -36,7 +36,7 @@
 namespace slidewave {
 
 struct GaussSeidelReport {
-  int iterations;  ///< sweeps of both passes (> max_iterations after a fallback)
+  int iterations;   ///< sweeps of both passes (> max_iterations after a fallback)
   double residual;  ///< last sweep's max reaction change / force_scale
   bool converged;
   int n_bounds_released = 0;  ///< nodes whose given bound fell back to f r_y (FrictionBounds::n_released)
@@ -101,7 +101,7 @@ class ContactSolver {
   GaussSeidelSettings settings_;
   int n_nodes_;
   std::vector<Eigen::Matrix2d> diagonal_blocks_;
-  Eigen::MatrixXd periodic_columns_;        ///< delassus_periodic_columns(W) (block-circulant W), else empty
+  Eigen::MatrixXd periodic_columns_;           ///< delassus_periodic_columns(W) (block-circulant W), else empty
   std::optional<AllStickSolution> all_stick_;  ///< block-circulant W only
 };
 

@@ -43,7 +43,7 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
                                Eigen::VectorXd& y);
 
 /// y = q + W r (y = q, then per block of 16 columns a sum over the block in column order, added to y).
-void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q,
-                       const Eigen::VectorXd& r, Eigen::VectorXd& y);
+void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                       Eigen::VectorXd& y);
 
 }  // namespace slidewave

@@ -267,7 +267,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   };
   Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
   while (failure.empty() && loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
-    if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
+    if (stop_requested && stop_requested->load()) {
+      failure = "interrupted";
+      break;
+    }
     const double t = (loop.step + 1) * hht.dt;
     // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
     stepper.predict(s, u_d_next);
@@ -281,7 +284,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     watch.lap(&StepProfile::free_solve);
     // 4b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
     const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
-    if (!report.converged) { failure = "contact_not_converged"; break; }
+    if (!report.converged) {
+      failure = "contact_not_converged";
+      break;
+    }
     watch.lap(&StepProfile::contact);
     // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
     u_d_following = top_after(loop.step + 2);

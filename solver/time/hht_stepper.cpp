@@ -135,8 +135,8 @@ void update_mass_rows_between(int begin, int end, const double* Ku_next, const d
                               const double* r_old, const double* Kd, double* Ma, double* Mv, double* Mu, double* rhs,
                               const MassCoefficients& k) {
   update_mass_rows<kForces, kPredict>(Ku_next + begin, Ku + begin, kForces ? r_new + begin : nullptr,
-                                      kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin,
-                                      Mu + begin, rhs + begin, end - begin, k);
+                                      kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin, Mu + begin,
+                                      rhs + begin, end - begin, k);
 }
 
 }  // namespace
@@ -151,8 +151,7 @@ void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   prescribe(u_d_next);
   // M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
   const PredictorCoefficients k = predictor_coefficients(hht_);
-  const double *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(), *Ma = s.Ma_f.data(), *Ku = s.Ku.data(),
-               *Kd = K_fd_u_d_.data();
+  const double *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(), *Ma = s.Ma_f.data(), *Ku = s.Ku.data(), *Kd = K_fd_u_d_.data();
   double* __restrict rhs = rhs_.data();
   for (int i = 0; i < n_f; ++i) rhs[i] = free_solve_rhs(Mu[i], Mv[i], Ma[i], Kd[i], Ku[i], k);
   add_previous_contact_forces(s.r);
@@ -188,7 +187,7 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen
   {
     // u~ = u + dt v + c a;  a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1))
     const double *u_next = u_work_.data(), *u = s.u.data();
-    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data();
+    double* __restrict v = s.v.data(), * __restrict acc = s.acc.data();
     for (int i = 0; i < n_f; ++i) {
       const double u_tilde = predicted(u[i], v[i], acc[i], p);
       const double acc_next = p.mass * (u_next[i] - u_tilde);

@@ -84,7 +84,7 @@ TEST(AllStick, RefusesWhenOneNodeWouldSlipOrOpen) {
   const Eigen::VectorXd r_inside = sticking_reactions(n, generator);
   Eigen::VectorXd outside_cone = r_inside, pulling = r_inside;
   outside_cone(2 * 5) = 1.05 * kF * outside_cone(2 * 5 + 1);  // node 5 beyond f r_y: it slips
-  pulling(2 * 9 + 1) = -0.1;                                   // node 9 pulled: it opens
+  pulling(2 * 9 + 1) = -0.1;                                  // node 9 pulled: it opens
   pulling(2 * 9) = 0;
   for (const Eigen::VectorXd& r_made : {outside_cone, pulling}) {
     const Eigen::VectorXd q = -W * r_made;

@@ -34,9 +34,10 @@ struct Layer {
 
 Layer layer(int n_x, int n_y, Integration integration, const char* mass) {
   // lambda_over_H = n_x / n_y gives n_x columns of elements.
-  RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", std::max(n_y, 2)},
-                                                     {"integration", testing::integration_name(integration)},
-                                                     {"mass", mass}}},
+  RunConfig config = testing::make_config({{"mesh",
+                                            {{"elements_per_H", std::max(n_y, 2)},
+                                             {"integration", testing::integration_name(integration)},
+                                             {"mass", mass}}},
                                            {"geometry", {{"lambda_over_H", double(n_x) / std::max(n_y, 2)}}}});
   return {config, LayerModel(config)};
 }
@@ -56,7 +57,8 @@ TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
               {"K_eff", K_eff}, {"M_ff", l.model.M_ff}, {"K_ff", l.model.K_ff}};
           for (const auto& [name, A] : matrices) {
             std::string reason;
-            ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason)) << where << " " << name << ": " << reason;
+            ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason))
+                << where << " " << name << ": " << reason;
             const BlockCirculantSolver fft(A, n_x, n_y);
             EXPECT_EQ(fft.size(), A.rows());
             const Eigen::VectorXd b = random_vector(fft.size(), 17);

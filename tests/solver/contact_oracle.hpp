@@ -78,10 +78,18 @@ inline std::vector<Eigen::VectorXd> enumerate_solutions(const Eigen::MatrixXd& W
     for (int k = 0; k < n && ok; ++k) {
       const double rx = r(2 * k), ry = r(2 * k + 1), dux = y(2 * k), uy = y(2 * k + 1);
       switch (states[k]) {
-        case TrialState::open: ok = uy >= -tol; break;
-        case TrialState::stick: ok = ry >= -tol && std::fabs(rx) <= f * ry + tol; break;
-        case TrialState::slip_forward: ok = ry >= -tol && dux >= -tol; break;
-        case TrialState::slip_backward: ok = ry >= -tol && dux <= tol; break;
+        case TrialState::open:
+          ok = uy >= -tol;
+          break;
+        case TrialState::stick:
+          ok = ry >= -tol && std::fabs(rx) <= f * ry + tol;
+          break;
+        case TrialState::slip_forward:
+          ok = ry >= -tol && dux >= -tol;
+          break;
+        case TrialState::slip_backward:
+          ok = ry >= -tol && dux <= tol;
+          break;
       }
     }
     if (!ok) continue;

@@ -84,9 +84,15 @@ Counts run_random_problems(bool delassus_like, std::uint64_t seed, int n_trials)
           counts.n_stick += state[k] == ContactState::stick;
           counts.n_slip += state[k] == ContactState::slip;
           switch (state[k]) {
-            case ContactState::open: EXPECT_EQ(r.segment<2>(2 * k).norm(), 0.0) << where; break;
-            case ContactState::stick: EXPECT_LE(y.segment<2>(2 * k).norm(), 1e-10) << where; break;
-            case ContactState::slip: EXPECT_NEAR(std::fabs(r(2 * k)), f * r(2 * k + 1), 1e-10) << where; break;
+            case ContactState::open:
+              EXPECT_EQ(r.segment<2>(2 * k).norm(), 0.0) << where;
+              break;
+            case ContactState::stick:
+              EXPECT_LE(y.segment<2>(2 * k).norm(), 1e-10) << where;
+              break;
+            case ContactState::slip:
+              EXPECT_NEAR(std::fabs(r(2 * k)), f * r(2 * k + 1), 1e-10) << where;
+              break;
           }
         }
       }
@@ -103,8 +109,8 @@ TEST(GaussSeidel, AgreesWithBruteForceOnDelassusLikeProblems) {
   ::testing::Test::RecordProperty("problems", c.problems);
   ::testing::Test::RecordProperty("several_solutions", c.several_solutions);
   ::testing::Test::RecordProperty("max_sweeps", c.max_iterations);
-  ::testing::Test::RecordProperty("states_open_stick_slip",
-                                  std::to_string(c.n_open) + " " + std::to_string(c.n_stick) + " " + std::to_string(c.n_slip));
+  ::testing::Test::RecordProperty("states_open_stick_slip", std::to_string(c.n_open) + " " + std::to_string(c.n_stick) +
+                                                                " " + std::to_string(c.n_slip));
 }
 
 // Fully coupled random W (u_x-u_y coupling inside a node too). Projected Gauss–Seidel is not
@@ -153,10 +159,7 @@ TEST(GaussSeidel, ReportsNonConvergenceAtTheIterationCap) {
 // (the old behaviour: not converged at any cap). The under-relaxed pass converges to the solution.
 TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
   Eigen::MatrixXd W(4, 4);
-  W << 0.41, 0.00, 0.08, 0.15,
-       0.00, 0.62, 0.35, 0.14,
-       0.08, 0.35, 0.53, 0.00,
-       0.15, 0.14, 0.00, 0.33;
+  W << 0.41, 0.00, 0.08, 0.15, 0.00, 0.62, 0.35, 0.14, 0.08, 0.35, 0.53, 0.00, 0.15, 0.14, 0.00, 0.33;
   const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.68, -0.10, 0.69, -0.24).finished();
   const double f = 2.0;
   const auto solutions = testing::enumerate_solutions(W, q, f, 1e-12);
@@ -171,8 +174,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
     }
     return r;
   };
-  const Eigen::VectorXd r_1 = plain_sweep(Eigen::VectorXd::Zero(4)), r_2 = plain_sweep(r_1),
-                        r_3 = plain_sweep(r_2);
+  const Eigen::VectorXd r_1 = plain_sweep(Eigen::VectorXd::Zero(4)), r_2 = plain_sweep(r_1), r_3 = plain_sweep(r_2);
   EXPECT_GT((r_2 - r_1).cwiseAbs().maxCoeff(), 1.0);
   EXPECT_LE((r_3 - r_1).cwiseAbs().maxCoeff(), 1e-14);
   EXPECT_GT((r_1 - solutions[0]).cwiseAbs().maxCoeff(), 0.4);
@@ -198,10 +200,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
 // After kMaxStatusChanges changes node 0 gets the Coulomb bound f r_y and the solve converges.
 TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
   Eigen::MatrixXd W(4, 4);
-  W << 1.09, 0.00, -0.24, -0.32,
-       0.00, 1.19, 0.22, 0.27,
-       -0.24, 0.22, 1.17, 0.00,
-       -0.32, 0.27, 0.00, 1.27;
+  W << 1.09, 0.00, -0.24, -0.32, 0.00, 1.19, 0.22, 0.27, -0.24, 0.22, 1.17, 0.00, -0.32, 0.27, 0.00, 1.27;
   const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.73, -0.06, 0.43, -0.41).finished();
   const std::vector<double> bounds{0.19, 0.13};
   const double f = 1.0;
@@ -266,7 +265,8 @@ TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
 // The dense W and its generating columns give the same solve: the same states and r to the tolerance (the
 // residual's start product sums in its own order, so not bit for bit).
 TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
-  const LayerModel model(testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
+  const LayerModel model(
+      testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
   const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff), model.mesh.n_contact());
   const int n = model.mesh.n_contact();
   std::mt19937_64 generator(3);
@@ -279,11 +279,13 @@ TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
     }
     // Odd trials: a given bound per node, Prakash–Clifton's
     const auto bounds = [&]() -> std::unique_ptr<FrictionBounds> {
-      if (trial % 2) return std::make_unique<PrakashCliftonBounds>(1.5, std::vector<double>(n, 0.5 * model.d.p0 * model.d.h));
+      if (trial % 2)
+        return std::make_unique<PrakashCliftonBounds>(1.5, std::vector<double>(n, 0.5 * model.d.p0 * model.d.h));
       return std::make_unique<CoulombBounds>(1.5);
     };
     const GaussSeidelSettings settings{1e-12, 200, model.d.p0 * model.d.h};
-    const ContactSolver dense(W, settings, DelassusLayout::dense), circulant(W, settings, DelassusLayout::block_circulant);
+    const ContactSolver dense(W, settings, DelassusLayout::dense),
+        circulant(W, settings, DelassusLayout::block_circulant);
     Eigen::VectorXd r_dense = Eigen::VectorXd::Zero(2 * n), r_columns = r_dense, y_dense, y_columns;
     std::vector<ContactState> state_dense, state_columns;
     const auto a = dense.solve(q, *bounds(), r_dense, state_dense);

@@ -113,14 +113,14 @@ void expect_dissipation(Path path) {
     const HHTCoefficients hht(a, 0.5);
     HHTState s = start(system, hht, both(system, 1.0, 0), both(system, 0, 0), Eigen::VectorXd::Zero(system.n_contact));
     const double E0 = oscillator_energy(m, k, s);
-    s = integrate(system, hht, s, 2000, [](double) { return 0.0; }, [](double) { return 0.0; }, true, path);
+    s = integrate(
+        system, hht, s, 2000, [](double) { return 0.0; }, [](double) { return 0.0; }, true, path);
     EXPECT_LT(oscillator_energy(m, k, s), 0.99 * E0) << "a = " << a;
   }
 }
 
 TEST_P(HHTStability, TrapezoidalRuleConservesEnergyExactly) { expect_energy_conserved(GetParam()); }
 TEST_P(HHTStability, PositiveADissipatesEnergy) { expect_dissipation(GetParam()); }
-
 
 // The energy tests through the FFT split solve of the layer's solver (the "spectral" path).
 TEST(HHT, OscillatorArrayOnTheFftSplitSolveKeepsEnergy) {

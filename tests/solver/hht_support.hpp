@@ -85,9 +85,9 @@ struct OwnedSystem {
     if (path == Path::one_pass)
       return HHTStepper(view(), hht, alpha_weighted,
                         std::make_unique<DenseSplitSolver>(effective_matrix(hht, view()), n_contact));
-    return HHTStepper(view(), hht, alpha_weighted,
-                      std::make_unique<TwoSolveSplit>(std::make_unique<DenseSolver>(effective_matrix(hht, view())),
-                                                      n_contact));
+    return HHTStepper(
+        view(), hht, alpha_weighted,
+        std::make_unique<TwoSolveSplit>(std::make_unique<DenseSolver>(effective_matrix(hht, view())), n_contact));
   }
 };
 
@@ -129,8 +129,8 @@ inline Eigen::VectorXd both(const OwnedSystem& system, double free, double presc
 
 /// Runs n_steps with the contact force r(t) and the support u_d(t); returns the final state.
 inline HHTState integrate(const OwnedSystem& system, const HHTCoefficients& hht, HHTState s, int n_steps,
-                   const std::function<double(double)>& r, const std::function<double(double)>& u_d,
-                   bool alpha_weighted = true, Path path = Path::two_solves) {
+                          const std::function<double(double)>& r, const std::function<double(double)>& u_d,
+                          bool alpha_weighted = true, Path path = Path::two_solves) {
   HHTStepper stepper = system.stepper(hht, alpha_weighted, path);
   for (int n = 1; n <= n_steps; ++n) {
     const double t = n * hht.dt;
@@ -142,7 +142,7 @@ inline HHTState integrate(const OwnedSystem& system, const HHTCoefficients& hht,
 }
 
 inline HHTState start(const OwnedSystem& system, const HHTCoefficients& hht, const Eigen::VectorXd& u,
-               const Eigen::VectorXd& v, const Eigen::VectorXd& r) {
+                      const Eigen::VectorXd& v, const Eigen::VectorXd& r) {
   return system.stepper(hht).initial_state(u, v, r, DenseSolver(system.M_ff));
 }
 

@@ -48,7 +48,8 @@ double oscillator_error(double a, int n_steps, Drive drive, Path path) {
   const double u0 = 1.0, v0 = 0.3;
   const double particular = F_amp / (k - m * Omega * Omega);
   const double A = u0 - particular, B = v0 / omega;
-  const double u_exact = A * std::cos(omega * t_end) + B * std::sin(omega * t_end) + particular * std::cos(Omega * t_end);
+  const double u_exact =
+      A * std::cos(omega * t_end) + B * std::sin(omega * t_end) + particular * std::cos(Omega * t_end);
   const double v_exact = omega * (-A * std::sin(omega * t_end) + B * std::cos(omega * t_end)) -
                          particular * Omega * std::sin(Omega * t_end);
   const OwnedSystem system = oscillator_on(path, m, k);
@@ -120,7 +121,8 @@ double chain_error(double a, int n_steps, Path path) {
 
   const HHTCoefficients hht(a, t_end / n_steps);
   HHTState s = start(system, hht, u0, v0, Eigen::VectorXd::Zero(1));
-  s = integrate(system, hht, s, n_steps, [](double) { return 0.0; }, [&](double t) { return V * t; }, true, path);
+  s = integrate(
+      system, hht, s, n_steps, [](double) { return 0.0; }, [&](double t) { return V * t; }, true, path);
   EXPECT_DOUBLE_EQ(s.u(n_f), V * t_end);
   EXPECT_EQ(s.acc(n_f), 0.0);
   return std::max((s.u.head(n_f) - u_exact).cwiseAbs().maxCoeff(), (s.v.head(n_f) - v_exact).cwiseAbs().maxCoeff());
@@ -141,8 +143,9 @@ TEST_P(HHTPaths, MassProductsStayConsistentWithTheState) {
   const HHTCoefficients hht(0.1, 0.3);
   HHTState s = start(system, hht, Eigen::Vector4d(0.1, -0.2, 0.3, 0.05), Eigen::Vector4d(0, 0.1, 0, 0.2),
                      Eigen::Vector2d(0.5, -0.1));
-  s = integrate(system, hht, s, 50, [](double t) { return std::sin(t); }, [](double t) { return 0.05 + 0.2 * t; },
-                true, GetParam());
+  s = integrate(
+      system, hht, s, 50, [](double t) { return std::sin(t); }, [](double t) { return 0.05 + 0.2 * t; }, true,
+      GetParam());
   const Eigen::MatrixXd M_ff = M.topLeftCorner(n_f, n_f);
   EXPECT_LT((s.Mu_f - M_ff * s.u.head(n_f)).norm(), 1e-12);
   EXPECT_LT((s.Mv_f - M_ff * s.v.head(n_f)).norm(), 1e-12);
@@ -163,7 +166,8 @@ TEST_P(HHTPaths, ContactWeightingsCoincideForTheTrapezoidalRule) {
   const OwnedSystem system = oscillator(2.0, 8.0);
   const HHTCoefficients hht(0.0, 0.05);
   const auto r = [](double t) { return std::cos(0.7 * t); };
-  const HHTState s0 = start(system, hht, Eigen::Vector2d(1, 0), Eigen::Vector2d(0.3, 0), Eigen::VectorXd::Constant(1, 1.0));
+  const HHTState s0 =
+      start(system, hht, Eigen::Vector2d(1, 0), Eigen::Vector2d(0.3, 0), Eigen::VectorXd::Constant(1, 1.0));
   const auto zero = [](double) { return 0.0; };
   const HHTState alpha = integrate(system, hht, s0, 300, r, zero, true, GetParam()),
                  end = integrate(system, hht, s0, 300, r, zero, false, GetParam());

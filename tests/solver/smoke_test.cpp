@@ -24,9 +24,9 @@ namespace slidewave {
 namespace {
 
 struct Measurements {
-  double max_opening = 0;     ///< m
+  double max_opening = 0;  ///< m
   double min_T_over_N = 0, max_T_over_N = 0, final_T_over_N = 0;
-  double t_first_slip = -1;   ///< s, first output row with a slipping node
+  double t_first_slip = -1;  ///< s, first output row with a slipping node
   double t_first_opening = -1;
   int n_slip_samples = 0;
   double wall_seconds = 0;
@@ -70,10 +70,11 @@ Measurements run_case(double nu, double f, int elements_per_H, double t_end) {
 }
 
 void report(const char* name, int elements_per_H, const Measurements& m) {
-  std::printf("[smoke] %s H/%d: max opening %.3e m, T/N min %.4f max %.4f final %.4f, first slip %.0f s, "
-              "first opening %.0f s, %d slip samples, wall %.1f s\n",
-              name, elements_per_H, m.max_opening, m.min_T_over_N, m.max_T_over_N, m.final_T_over_N,
-              m.t_first_slip, m.t_first_opening, m.n_slip_samples, m.wall_seconds);
+  std::printf(
+      "[smoke] %s H/%d: max opening %.3e m, T/N min %.4f max %.4f final %.4f, first slip %.0f s, "
+      "first opening %.0f s, %d slip samples, wall %.1f s\n",
+      name, elements_per_H, m.max_opening, m.min_T_over_N, m.max_T_over_N, m.final_T_over_N, m.t_first_slip,
+      m.t_first_opening, m.n_slip_samples, m.wall_seconds);
   ::testing::Test::RecordProperty("max_opening", testing::sci(m.max_opening));
   ::testing::Test::RecordProperty("min_T_over_N", testing::sci(m.min_T_over_N));
 }
