@@ -15,7 +15,7 @@
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace {
 
@@ -80,14 +80,15 @@ int main(int argc, char** argv) {
   if (resolutions.empty()) resolutions = {32, 64, 128};
   if (lambdas.empty()) lambdas = {2, 6};
 
-  std::printf("# K_eff of the paper's layer (reduced integration, consistent mass, alpha = 0.1), one core;\n"
-              "# times: best of 5 batches. solve: one right-hand side. Zcol: per column of K_eff^-1 C^T, solved\n"
-              "# min(2 n_x, 64) unit columns at once. MB: factor + workspace (CHOLMOD: in use after the\n"
-              "# factorization, and its peak). ratio: CHOLMOD solve / FFT solve.\n"
-              "# max_rel: max|x - x_chol| / max|x_chol| over 3 random right-hand sides and the Z columns\n");
-  std::printf("%8s %5s %5s %7s | %9s %9s %9s %8s %8s | %9s %9s %9s %7s | %6s %8s\n", "lambda/H", "H/h", "n_x",
-              "n_dofs", "chol_fac", "chol_slv", "chol_Z", "chol_MB", "peak_MB", "fft_fac", "fft_slv", "fft_Z", "fft_MB",
-              "ratio", "max_rel");
+  std::printf(
+      "# K_eff of the paper's layer (reduced integration, consistent mass, alpha = 0.1), one core;\n"
+      "# times: best of 5 batches. solve: one right-hand side. Zcol: per column of K_eff^-1 C^T, solved\n"
+      "# min(2 n_x, 64) unit columns at once. MB: factor + workspace (CHOLMOD: in use after the\n"
+      "# factorization, and its peak). ratio: CHOLMOD solve / FFT solve.\n"
+      "# max_rel: max|x - x_chol| / max|x_chol| over 3 random right-hand sides and the Z columns\n");
+  std::printf("%8s %5s %5s %7s | %9s %9s %9s %8s %8s | %9s %9s %9s %7s | %6s %8s\n", "lambda/H", "H/h", "n_x", "n_dofs",
+              "chol_fac", "chol_slv", "chol_Z", "chol_MB", "peak_MB", "fft_fac", "fft_slv", "fft_Z", "fft_MB", "ratio",
+              "max_rel");
   std::printf("%8s %5s %5s %7s | %9s %9s %9s %8s %8s | %9s %9s %9s %7s | %6s %8s\n", "", "", "", "", "s", "ms",
               "ms/col", "", "", "s", "ms", "ms/col", "", "", "");
   for (double lambda_over_H : lambdas)
@@ -98,7 +99,7 @@ int main(int argc, char** argv) {
       config.geometry.lambda_over_H = lambda_over_H;
       const slidewave::LayerModel model(config);
       const slidewave::HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-      const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * model.M_ff + (1 - hht.alpha) * model.K_ff;
+      const Eigen::SparseMatrix<double> K_eff = slidewave::effective_matrix(hht, model.M_ff, model.K_ff);
       const int n_x = model.mesh.n_x, n_y = model.mesh.n_y, n_free = model.n_free;
 
       // 3. Factorizations.
@@ -130,8 +131,8 @@ int main(int argc, char** argv) {
       const double fft_Z_s = seconds_per_call([&] { Z_fft = fft.solve(Ct); }, min_time);
 
       // 6. Agreement.
-      const double difference = std::max(relative_difference(fft.solve(B), cholmod.solve(B)),
-                                          relative_difference(Z_fft, Z_cholmod));
+      const double difference =
+          std::max(relative_difference(fft.solve(B), cholmod.solve(B)), relative_difference(Z_fft, Z_cholmod));
 
       std::printf("%8g %5d %5d %7d | %9.4f %9.4f %9.4f %8.1f %8.1f | %9.4f %9.4f %9.4f %7.1f | %6.1f %8.1e\n",
                   lambda_over_H, n, n_x, n_free, cholmod_factor_s, 1e3 * cholmod_solve_s,

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "fem/stencil_product.hpp"
-#include "model/layer_model.hpp"
 #include "io/run_session.hpp"
+#include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -41,8 +41,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// Median-free simple estimate: average wall time of repeated solves with the K_eff factor.
 double one_solve_seconds(const slidewave::LayerModel& model) {
   const slidewave::HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
-  const slidewave::PartitionedSystem system{model.K, model.K_ff, model.M_ff, model.M_ff_rows, model.K_fd,
-                                           model.n_free, model.n_top, model.n_contact_dofs};
+  const slidewave::PartitionedSystem system{model.K,    model.K_ff,   model.M_ff,  model.M_ff_rows,
+                                            model.K_fd, model.n_free, model.n_top, model.n_contact_dofs};
   const auto factor = model.factorize(slidewave::effective_matrix(hht, system));
   Eigen::VectorXd b = Eigen::VectorXd::Ones(model.n_free), x(model.n_free);
   const int repeats = 200;
@@ -137,57 +137,63 @@ int main(int argc, char** argv) {
                (solver_name = argv[++i], solver_name == "spectral" || solver_name == "cholmod")) {
       solver = solver_name == "cholmod" ? slidewave::LinearSolverKind::cholmod : slidewave::LinearSolverKind::spectral;
     } else {
-      std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver spectral|cholmod] [--threads N] [--stream FOLDER [--checkpoint-interval S]] [--substrate E_RATIO]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F] [--solver spectral|cholmod] "
+                   "[--threads N] [--stream FOLDER [--checkpoint-interval S]] [--substrate E_RATIO]\n",
+                   argv[0]);
       return 2;
     }
   }
   if (resolutions.empty()) resolutions = {32, 64, 128};
   if (lambdas.empty()) lambdas = {2};
 
-  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, output %s\n", nu, f,
-              t_end, solver_name.c_str(), threads, threads == 1 ? "" : "s",
-              stream_folder.empty() ? "none (in memory)" : ("streamed, checkpoints every " +
-                                                             std::to_string(checkpoint_interval) + " s").c_str());
-  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h",
-              "lam/H", "n_dofs", "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step", "steps/s",
-              "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
+  std::printf("# nu=%g f=%g, t_end=%g s (stage 3), linear solver %s, %d thread%s, output %s\n", nu, f, t_end,
+              solver_name.c_str(), threads, threads == 1 ? "" : "s",
+              stream_folder.empty()
+                  ? "none (in memory)"
+                  : ("streamed, checkpoints every " + std::to_string(checkpoint_interval) + " s").c_str());
+  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h", "lam/H",
+              "n_dofs", "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step",
+              "steps/s", "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
   for (double lambda_over_H : lambdas)
-  for (int n : resolutions) {
-    slidewave::RunConfig config;
-    config.mesh.elements_per_H = n;
-    config.geometry.lambda_over_H = lambda_over_H;
-    config.material.nu = nu;
-    config.friction.f = f;
-    config.time.t_end = t_end;
-    config.numerics.linear_solver = solver;
-    config.numerics.threads = threads;
-    if (substrate_ratio > 0)
-      config.substrate = slidewave::SubstrateConfig{substrate_ratio * config.material.E, nu, config.material.rho,
-                                                    config.geometry.H};
-    const slidewave::LayerModel model(config);
-    config.output.checkpoint_interval = checkpoint_interval;
-    slidewave::StepProfile profile;
-    const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<slidewave::RunSession> session;
-    if (!stream_folder.empty())
-      session = std::make_unique<slidewave::RunSession>(stream_folder + "/bench_H" + std::to_string(n) + ".h5", config,
-                                                        slidewave::Provenance{"slidewave_bench_step", ""}, false,
-                                                        std::cerr);
-    std::unique_ptr<TimedObserver> timed;
-    if (session) timed = std::make_unique<TimedObserver>(*session);
-    slidewave::simulate(model, {}, nullptr, &profile, timed.get());
-    const double output_seconds = timed ? timed->seconds : 0;
-    const double total = seconds_since(start);
-    const double per_step = (total - profile.setup) / profile.steps;
-    const double solve = one_solve_seconds(model);
-    const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
-    std::printf("%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.2f %8.1f\n",
-                n, lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps),
-                ms(profile.predictor), ms(profile.free_solve), ms(profile.contact),
-                ms(profile.correction), ms(profile.diagnostics), ms(output_seconds), 1e3 * per_step, 1 / per_step,
-                1e3 * solve, 1e3 * stiffness_product_seconds(model), per_step / solve,
-                static_cast<double>(profile.contact_sweeps) / profile.steps, profile.setup, total, peak_rss_mb());
-    std::fflush(stdout);
-  }
+    for (int n : resolutions) {
+      slidewave::RunConfig config;
+      config.mesh.elements_per_H = n;
+      config.geometry.lambda_over_H = lambda_over_H;
+      config.material.nu = nu;
+      config.friction.f = f;
+      config.time.t_end = t_end;
+      config.numerics.linear_solver = solver;
+      config.numerics.threads = threads;
+      if (substrate_ratio > 0)
+        config.substrate =
+            slidewave::SubstrateConfig{substrate_ratio * config.material.E, nu, config.material.rho, config.geometry.H};
+      const slidewave::LayerModel model(config);
+      config.output.checkpoint_interval = checkpoint_interval;
+      slidewave::StepProfile profile;
+      const auto start = std::chrono::steady_clock::now();
+      std::unique_ptr<slidewave::RunSession> session;
+      if (!stream_folder.empty())
+        session = std::make_unique<slidewave::RunSession>(stream_folder + "/bench_H" + std::to_string(n) + ".h5",
+                                                          config, slidewave::Provenance{"slidewave_bench_step", ""},
+                                                          false, std::cerr);
+      std::unique_ptr<TimedObserver> timed;
+      if (session) timed = std::make_unique<TimedObserver>(*session);
+      slidewave::simulate(model, {}, nullptr, &profile, timed.get());
+      const double output_seconds = timed ? timed->seconds : 0;
+      const double total = seconds_since(start);
+      const double per_step = (total - profile.setup) / profile.steps;
+      const double solve = one_solve_seconds(model);
+      const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
+      std::printf(
+          "%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.2f "
+          "%8.1f\n",
+          n, lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor),
+          ms(profile.free_solve), ms(profile.contact), ms(profile.correction), ms(profile.diagnostics),
+          ms(output_seconds), 1e3 * per_step, 1 / per_step, 1e3 * solve, 1e3 * stiffness_product_seconds(model),
+          per_step / solve, static_cast<double>(profile.contact_sweeps) / profile.steps, profile.setup, total,
+          peak_rss_mb());
+      std::fflush(stdout);
+    }
   return 0;
 }

@@ -48,7 +48,7 @@ template <typename Field>
 ConfigKey integer(std::string group, std::string name, long long lower, std::optional<long long> upper,
                   std::string description, Field field) {
   ConfigKey k{group, name, KeyKind::integer, closed(static_cast<double>(lower)), unbounded, {}, {}, "", description,
-              {}, {}};
+              {},    {}};
   if (upper) k.upper = closed(static_cast<double>(*upper));
   k.get = [field](const RunConfig& c) { return json(field(c)); };
   k.set = [field](RunConfig& c, const json& v) {
@@ -64,8 +64,7 @@ using MemberOf = std::decay_t<decltype(std::declval<Field>()(std::declval<RunCon
 
 template <typename Field>
 ConfigKey choice(std::string group, std::string name, std::vector<std::pair<std::string, MemberOf<Field>>> options,
-                 std::string description, Field field,
-                 std::vector<std::pair<std::string, std::string>> retired = {}) {
+                 std::string description, Field field, std::vector<std::pair<std::string, std::string>> retired = {}) {
   ConfigKey k{group, name, KeyKind::choice, unbounded, unbounded, {}, std::move(retired), "", description, {}, {}};
   for (const auto& option : options) k.choices.push_back(option.first);
   k.get = [field, options](const RunConfig& c) {
@@ -92,6 +91,8 @@ ConfigKey number_list(std::string group, std::string name, std::optional<Bound> 
 std::vector<ConfigKey> make_table() {
   constexpr double kMaxStepsLimit = 1e9;  // keeps every step counter far inside a 32-bit int
   constexpr long long kMaxSeed = (1LL << 53) - 1;
+  // The key table as laid out by hand: one key per entry, its accessor on the entry's last line.
+  // clang-format off
   return {
       number("material", "E", open(0), unbounded, "Pa", "Young's modulus",
              [](auto& c) -> auto& { return c.material.E; }),
@@ -132,7 +133,7 @@ std::vector<ConfigKey> make_table() {
              "contact pressure, ds/dt = -(abs(v)+pc_velocity)/pc_length (s - sigma), updated once per step "
              "(backward Euler, lagged); a node whose open/closed status cycles within one contact solve "
              "(grazing: no solution with a fixed bound) falls back to the Coulomb bound f r_y for that solve "
-             "(solver/contact/gauss_seidel.hpp)",
+             "(solver/contact/prakash_clifton.hpp)",
              [](auto& c) -> auto& { return c.friction.regularization; }),
       number("friction", "pc_length", open(0), unbounded, "m", "Prakash–Clifton slip length L",
              [](auto& c) -> auto& { return c.friction.pc_length; }),
@@ -169,7 +170,7 @@ std::vector<ConfigKey> make_table() {
       integer("contact", "max_iterations", 1, 100000000,
               "Gauss–Seidel sweeps per pass; a pass that misses the tolerance, or settles on a period-2 orbit, "
               "is followed by one under-relaxed pass (omega 0.5) of as many sweeps, after which the step is "
-              "an error (solver/contact/gauss_seidel.hpp)",
+              "an error (solver/contact/contact_solver.hpp)",
               [](auto& c) -> auto& { return c.contact.max_iterations; }),
       choice("contact", "all_stick", {{"exact", AllStick::exact}},
              "how a step whose nodes all stuck before is solved: first the exact all-stick solution "
@@ -237,6 +238,7 @@ std::vector<ConfigKey> make_table() {
                       "h = geometry.H / mesh.elements_per_H; its bottom is held (u = 0)",
                       [](auto& c) -> auto& { return c.substrate.H; }),
   };
+  // clang-format on
 }
 
 /// Shortest %g form that reads back as x: 0, 0.5, 0.01, 1e-05.
@@ -265,8 +267,8 @@ bool within(const ConfigKey& k, double x) {
 std::string interval_text(const ConfigKey& k) {
   std::string text;
   if (k.lower && k.upper)
-    text = bound_text(*k.lower, false) + (k.lower->open ? " < " : " <= ") + k.name +
-           (k.upper->open ? " < " : " <= ") + bound_text(*k.upper, false);
+    text = bound_text(*k.lower, false) + (k.lower->open ? " < " : " <= ") + k.name + (k.upper->open ? " < " : " <= ") +
+           bound_text(*k.upper, false);
   else if (k.lower)
     text = k.name + (k.lower->open ? " > " : " >= ") + bound_text(*k.lower, false);
   else if (k.upper)

@@ -37,8 +37,8 @@ struct ConfigKey {
   std::vector<std::string> choices;   ///< the allowed strings of a `choice`, in the documented order
   /// Values a `choice` once allowed, each with what the solver does instead (refused with that message).
   std::vector<std::pair<std::string, std::string>> retired;
-  std::string unit;                   ///< SI unit, empty for a dimensionless key
-  std::string description;            ///< one paragraph of Markdown
+  std::string unit;         ///< SI unit, empty for a dimensionless key
+  std::string description;  ///< one paragraph of Markdown
   std::function<nlohmann::json(const RunConfig&)> get;
   std::function<void(RunConfig&, const nlohmann::json&)> set;  ///< precondition: `problem(value)` is empty
 

@@ -10,11 +10,16 @@ using nlohmann::json;
 
 std::string kind_name(KeyKind kind) {
   switch (kind) {
-    case KeyKind::number: return "number";
-    case KeyKind::optional_number: return "optional_number";
-    case KeyKind::integer: return "integer";
-    case KeyKind::choice: return "choice";
-    case KeyKind::number_list: return "number_list";
+    case KeyKind::number:
+      return "number";
+    case KeyKind::optional_number:
+      return "optional_number";
+    case KeyKind::integer:
+      return "integer";
+    case KeyKind::choice:
+      return "choice";
+    case KeyKind::number_list:
+      return "number_list";
   }
   return "";
 }
@@ -31,8 +36,12 @@ std::string cell(const std::string& text) {
 json config_keys_json() {
   json out = json::array();
   for (const auto& k : config_keys()) {
-    json row = {{"group", k.group},         {"name", k.name}, {"kind", kind_name(k.kind)},
-                {"default", k.default_value()}, {"unit", k.unit}, {"description", k.description},
+    json row = {{"group", k.group},
+                {"name", k.name},
+                {"kind", kind_name(k.kind)},
+                {"default", k.default_value()},
+                {"unit", k.unit},
+                {"description", k.description},
                 {"allowed", k.allowed()}};
     if (k.lower) row["minimum"] = {{"value", k.lower->value}, {"exclusive", k.lower->open}};
     if (k.upper) row["maximum"] = {{"value", k.upper->value}, {"exclusive", k.upper->open}};

@@ -75,14 +75,13 @@ RunConfig parse_run_config(const nlohmann::json& input) {
 
   // Cross-key rules: the period must hold a whole number of elements, at least 3 (periodic ties).
   const double n_x = c.geometry.lambda_over_H * c.mesh.elements_per_H;
-  if (std::fabs(n_x - std::round(n_x)) > 1e-9 * n_x || std::round(n_x) < 3 ||
-      n_x > std::numeric_limits<int>::max())
+  if (std::fabs(n_x - std::round(n_x)) > 1e-9 * n_x || std::round(n_x) < 3 || n_x > std::numeric_limits<int>::max())
     problems.push_back("geometry.lambda_over_H: " + std::to_string(c.geometry.lambda_over_H) +
                        " times mesh.elements_per_H must be an integer >= 3");
   // The substrate: all four keys or none; its thickness a whole number of the layer's elements.
   const SubstrateConfig& s = c.substrate;
-  const std::pair<const char*, bool> given[] = {{"E", s.E.has_value()}, {"nu", s.nu.has_value()},
-                                                {"rho", s.rho.has_value()}, {"H", s.H.has_value()}};
+  const std::pair<const char*, bool> given[] = {
+      {"E", s.E.has_value()}, {"nu", s.nu.has_value()}, {"rho", s.rho.has_value()}, {"H", s.H.has_value()}};
   int n_given = 0;
   for (const auto& g : given) n_given += g.second;
   if (n_given > 0 && n_given < 4) {
@@ -90,8 +89,10 @@ RunConfig parse_run_config(const nlohmann::json& input) {
       if (!g.second)
         for (const auto& key : config_keys())
           if (key.group == "substrate" && key.name == g.first)
-            problems.push_back(key.path() + ": missing; the substrate needs E, nu, rho and H together (or none "
-                               "of them: the rigid flat); allowed " + key.allowed().substr(8));  // not "null or "
+            problems.push_back(key.path() +
+                               ": missing; the substrate needs E, nu, rho and H together (or none "
+                               "of them: the rigid flat); allowed " +
+                               key.allowed().substr(8));  // not "null or "
   } else if (n_given == 4 && problems.empty()) {
     const double n_y = *s.H * c.mesh.elements_per_H / c.geometry.H;
     if (std::fabs(n_y - std::round(n_y)) > 1e-9 * n_y || std::round(n_y) < 2 || std::round(n_y) > 65536)
@@ -104,8 +105,8 @@ RunConfig parse_run_config(const nlohmann::json& input) {
   if (problems.empty()) {
     const DerivedConstants d = c.derived();
     if (!(d.n_steps <= static_cast<double>(c.time.max_steps)))
-      problems.push_back("time.max_steps: t_end = " + short_number(c.time.t_end) + " s at dt = " +
-                         short_number(d.dt) + " s is " + short_number(d.n_steps) +
+      problems.push_back("time.max_steps: t_end = " + short_number(c.time.t_end) + " s at dt = " + short_number(d.dt) +
+                         " s is " + short_number(d.n_steps) +
                          " steps, over time.max_steps = " + std::to_string(c.time.max_steps) +
                          "; shorten time.t_end, enlarge the time step or raise time.max_steps");
   }
@@ -126,8 +127,7 @@ std::string read_config_bytes(const std::string& path) {
   return bytes;
 }
 
-RunConfig parse_run_config_text(const std::string& text, const std::string& origin,
-                                const nlohmann::json& overrides) {
+RunConfig parse_run_config_text(const std::string& text, const std::string& origin, const nlohmann::json& overrides) {
   nlohmann::json j = parse_strict_json(text, origin);
   if (j.is_object()) j.merge_patch(overrides);
   return parse_run_config(j);

@@ -18,14 +18,20 @@ enum class ProgressMode { automatic, always, never };
 enum class LinearSolverKind { spectral, cholmod };
 enum class AllStick { exact };  ///< one value: the key contact.all_stick stays readable (config_keys.cpp)
 
-struct MaterialConfig { double E = 1000.0, nu = 0.2, rho = 1000.0; };
-struct GeometryConfig { double H = 25.0, lambda_over_H = 2.0; };
+struct MaterialConfig {
+  double E = 1000.0, nu = 0.2, rho = 1000.0;
+};
+struct GeometryConfig {
+  double H = 25.0, lambda_over_H = 2.0;
+};
 struct MeshConfig {
   int elements_per_H = 32;
   Integration integration = Integration::reduced;
   MassKind mass = MassKind::consistent;
 };
-struct LoadingConfig { double Uy_over_H = -0.001, preshear_ratio = 0.95, V0_over_cs = 1e-5; };
+struct LoadingConfig {
+  double Uy_over_H = -0.001, preshear_ratio = 0.95, V0_over_cs = 1e-5;
+};
 struct FrictionConfig {
   double f = 1.5;
   Regularization regularization = Regularization::none;
@@ -36,7 +42,7 @@ struct TimeConfig {
   double dt_times_cs = 0.5;  ///< dt = dt_times_cs / c_s, a length (m), used when dt is absent
   std::optional<double> dt;  ///< explicit step (s)
   double t_end = 1500.0;
-  double hht_alpha = 0.1;    ///< the paper's alpha (classic HHT alpha_H = -hht_alpha)
+  double hht_alpha = 0.1;  ///< the paper's alpha (classic HHT alpha_H = -hht_alpha)
   ContactWeighting contact_weighting = ContactWeighting::alpha;
   std::optional<double> stop_after_opening;
   long long max_steps = 20000000;  ///< a longer run is rejected before it starts (exit 2)
@@ -46,7 +52,10 @@ struct ContactConfig {
   int max_iterations = 2000;
   AllStick all_stick = AllStick::exact;
 };
-struct PerturbationConfig { double amplitude = 1e-5; long long seed = 1; };
+struct PerturbationConfig {
+  double amplitude = 1e-5;
+  long long seed = 1;
+};
 struct NumericsConfig {
   /// spectral: FFT in x, one K_eff pass per step (the uniform periodic layer); cholmod: the general sparse
   /// path (two solves per step), kept as the tests' oracle
@@ -72,8 +81,8 @@ struct OutputConfig {
 struct DerivedConstants {
   double G, lame_lambda, c_s, c_l;
   double H, lambda, h;
-  int n_x, n_y;         ///< elements along x (period) and y (height)
-  double p0;            ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive)
+  int n_x, n_y;  ///< elements along x (period) and y (height)
+  double p0;     ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive)
   double V0, dt;
   double t_onset_estimate;  ///< quasi-static time for T/N to reach f from preshear_ratio*f (s)
   /// Stage-3 steps the time loop runs at most, ceil(t_end / dt - 1e-9): a double, so that an absurd

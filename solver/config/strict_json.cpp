@@ -76,7 +76,8 @@ json parse_strict_json(const std::string& text, const std::string& origin) {
     const auto start = what.find(mark);
     const std::string literal =
         start == std::string::npos ? what : what.substr(start + mark.size(), what.size() - start - mark.size() - 1);
-    throw ConfigError({path_of(frames) + ": " + excerpt(literal) + " is beyond the range of a double; allowed a finite "
+    throw ConfigError({path_of(frames) + ": " + excerpt(literal) +
+                       " is beyond the range of a double; allowed a finite "
                        "number"});
   } catch (const json::exception& e) {
     throw ConfigError({origin + ": not valid JSON: " + excerpt(e.what(), 200)});

@@ -20,14 +20,13 @@ AllStickSolution::AllStickSolution(const Eigen::MatrixXd& W) : n_nodes_(static_c
   trial_.resize(W.rows());
 }
 
-bool AllStickSolution::solve(const Eigen::VectorXd& q, double f, const std::vector<double>& bounds,
-                             Eigen::VectorXd& r, std::vector<ContactState>& state) {
+bool AllStickSolution::solve(const Eigen::VectorXd& q, const FrictionBounds& bounds, Eigen::VectorXd& r,
+                             std::vector<ContactState>& state) {
   minus_q_ = -q;
   periodic_residual(inverse_columns_, n_nodes_, zero_, minus_q_, trial_);
   for (int k = 0; k < n_nodes_; ++k) {
     const double r_x = trial_(2 * k), r_y = trial_(2 * k + 1);
-    const double bound = bounds.empty() ? f * r_y : bounds[k];
-    if (!(r_y >= 0 && std::fabs(r_x) <= bound)) return false;
+    if (!(r_y >= 0 && std::fabs(r_x) <= bounds.bound(k, r_y))) return false;
   }
   r.swap(trial_);
   state.assign(n_nodes_, ContactState::stick);

@@ -1,10 +1,11 @@
 #pragma once
 // The exact solution of a step's contact problem while the whole interface sticks.
 // Every node sticking means y = q + W r = 0, so r = -W^{-1} q: one product with W^{-1}, where projected
-// Gauss–Seidel (gauss_seidel.hpp) needs 9-27 sweeps to reach the same r to its tolerance (before slip
+// Gauss–Seidel (contact_solver.hpp) needs 9-27 sweeps to reach the same r to its tolerance (before slip
 // onset, most of a Table-1 run). That r solves the problem whenever every node of it is closed and inside
-// its friction bound (r_y >= 0, |r_x| <= f r_y, or <= the given bound): the stick conditions then hold at
-// every node with y = 0 exactly. Otherwise it is not a solution and the step is left to Gauss–Seidel.
+// its friction bound (r_y >= 0, |r_x| <= the law's bound, contact/friction_bounds.hpp): the stick
+// conditions then hold at every node with y = 0 exactly. Otherwise it is not a solution and the step is left to
+// Gauss–Seidel.
 //
 // W^{-1} of a block-circulant W is block-circulant too: its two generating columns (solved once, with
 // W's Cholesky factor) give every product through the same kernel as W's (periodic_residual).
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "contact/coulomb_local.hpp"
+#include "contact/friction_bounds.hpp"
 
 namespace slidewave {
 
@@ -24,8 +26,8 @@ class AllStickSolution {
 
   /// r = -W^{-1} q if it is closed and inside the friction bound at every node: then r holds it, every
   /// state is stick and true is returned. Otherwise false, and r and state are left as they were.
-  /// @param bounds empty (bound f r_y) or one fixed bound per node (Prakash–Clifton, as Gauss–Seidel takes them)
-  bool solve(const Eigen::VectorXd& q, double f, const std::vector<double>& bounds, Eigen::VectorXd& r,
+  /// @param bounds the friction law's bounds of this solve
+  bool solve(const Eigen::VectorXd& q, const FrictionBounds& bounds, Eigen::VectorXd& r,
              std::vector<ContactState>& state);
 
  private:

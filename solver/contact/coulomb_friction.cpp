@@ -4,7 +4,9 @@ namespace slidewave {
 
 FrictionState CoulombFriction::initial_state(const Eigen::VectorXd&) const { return {}; }
 
-void CoulombFriction::bounds(const FrictionState&, std::vector<double>& bounds) const { bounds.clear(); }
+std::unique_ptr<FrictionBounds> CoulombFriction::bounds(const FrictionState&) const {
+  return std::make_unique<CoulombBounds>(f_);
+}
 
 void CoulombFriction::update(const Eigen::VectorXd&, const Eigen::VectorXd&, double, FrictionState&) const {}
 

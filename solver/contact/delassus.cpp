@@ -16,7 +16,6 @@
   __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
 #endif
 
-
 namespace slidewave {
 
 Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs) {

@@ -23,11 +23,11 @@ Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_cont
 /// and still exactly block-circulant), stacked twice: a 4n x 2 matrix C with
 ///     W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n),
 /// the same numbers bit for bit, in 2n x 2 storage instead of 2n x 2n (what the Gauss–Seidel sweeps
-/// read for their in-place updates, contact/gauss_seidel.hpp).
+/// read for their in-place updates, contact/contact_solver.hpp).
 Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 
 // ---- Products with a block-circulant W read from its generating columns ----
-// The two products of the Gauss–Seidel contact solve (contact/gauss_seidel.hpp) with a block-circulant
+// The two products of the Gauss–Seidel contact solve (contact/contact_solver.hpp) with a block-circulant
 // Delassus operator W, computed from its two generating columns (delassus_periodic_columns, a 4n x 2
 // matrix C with W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n)) instead of the dense 2n x 2n W:
 // C fits in the cache where W does not.
@@ -43,7 +43,7 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
                                Eigen::VectorXd& y);
 
 /// y = q + W r (y = q, then per block of 16 columns a sum over the block in column order, added to y).
-void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q,
-                       const Eigen::VectorXd& r, Eigen::VectorXd& y);
+void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                       Eigen::VectorXd& y);
 
 }  // namespace slidewave

@@ -16,7 +16,7 @@ using FrictionLawFactory = std::function<std::unique_ptr<FrictionLaw>(const Fric
 /// The registry: one line per law, keyed by `friction.regularization`.
 const std::map<Regularization, FrictionLawFactory>& registry() {
   static const std::map<Regularization, FrictionLawFactory> laws{
-      {Regularization::none, [](const FrictionConfig&) { return std::make_unique<CoulombFriction>(); }},
+      {Regularization::none, [](const FrictionConfig& c) { return std::make_unique<CoulombFriction>(c.f); }},
       {Regularization::prakash_clifton,
        [](const FrictionConfig& c) { return std::make_unique<PrakashClifton>(c.f, c.pc_length, c.pc_velocity); }},
   };

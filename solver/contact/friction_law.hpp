@@ -1,16 +1,17 @@
 #pragma once
 // What the time loop needs of a friction law, beyond the local Signorini–Coulomb solve
 // (contact/coulomb_local.hpp) that every law shares: the friction bound of each closed node for the
-// contact solve of a step, and the update of the law's state after the step.
+// contact solve of a step (contact/friction_bounds.hpp), and the update of the law's state after the step.
 //
-// Adding a law: one file pair that implements FrictionLaw, plus one line in the registry of
-// contact/friction_law.cpp (keyed by the config value `friction.regularization`). The contact solver and
-// the loop do not change.
+// Adding a law: one file pair that implements FrictionLaw (and its FrictionBounds), plus one line in the
+// registry of contact/friction_law.cpp (keyed by the config value `friction.regularization`). The contact
+// solver and the loop do not change.
 #include <Eigen/Dense>
 #include <memory>
 #include <vector>
 
 #include "config/run_config.hpp"
+#include "contact/friction_bounds.hpp"
 
 namespace slidewave {
 
@@ -27,9 +28,8 @@ class FrictionLaw {
   /// State at the start of the dynamics, from the reactions r of the preload (2 per node: x, y).
   virtual FrictionState initial_state(const Eigen::VectorXd& r) const = 0;
 
-  /// Friction bound of each closed node for the next contact solve (N), in `bounds`; left empty for the
-  /// Coulomb bound f r_y (see contact/gauss_seidel.hpp).
-  virtual void bounds(const FrictionState& state, std::vector<double>& bounds) const = 0;
+  /// Friction bound of each closed node for the next contact solve.
+  virtual std::unique_ptr<FrictionBounds> bounds(const FrictionState& state) const = 0;
 
   /// Moves the state over a step that ended with the reactions r and the contact displacement increment
   /// du_contact (2 per node: du_x, du_y), dt long.

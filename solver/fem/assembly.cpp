@@ -11,8 +11,7 @@ SparseMatrix assemble_uniform(const LayerMesh& mesh, const Matrix8& Ke) {
     const auto nodes = mesh.element_nodes(e);
     for (int a = 0; a < 8; ++a)
       for (int b = 0; b < 8; ++b)
-        if (Ke(a, b) != 0)
-          triplets.emplace_back(2 * nodes[a / 2] + a % 2, 2 * nodes[b / 2] + b % 2, Ke(a, b));
+        if (Ke(a, b) != 0) triplets.emplace_back(2 * nodes[a / 2] + a % 2, 2 * nodes[b / 2] + b % 2, Ke(a, b));
   }
   SparseMatrix A(mesh.n_dofs(), mesh.n_dofs());
   A.setFromTriplets(triplets.begin(), triplets.end());

@@ -18,8 +18,7 @@ struct Entry {
 
 std::vector<Entry> stored_row(const RowMatrix& K, int row) {
   std::vector<Entry> entries;
-  for (RowMatrix::InnerIterator it(K, row); it; ++it)
-    entries.push_back({static_cast<int>(it.index()), it.value()});
+  for (RowMatrix::InnerIterator it(K, row); it; ++it) entries.push_back({static_cast<int>(it.index()), it.value()});
   return entries;
 }
 
@@ -34,8 +33,8 @@ std::string number(double x) {
 
 std::string row_name(int row, int n_x) {
   const int node = row / 2;
-  return "row " + std::to_string(row) + " (node i = " + std::to_string(node % n_x) + ", j = " +
-         std::to_string(node / n_x) + ", d = " + std::to_string(row % 2) + ")";
+  return "row " + std::to_string(row) + " (node i = " + std::to_string(node % n_x) +
+         ", j = " + std::to_string(node / n_x) + ", d = " + std::to_string(row % 2) + ")";
 }
 
 [[noreturn]] void refuse(int n_x, const std::string& what) {
@@ -85,11 +84,11 @@ StencilProduct::StencilProduct(const RowMatrix& K, int n_x) : n_x_(n_x) {
             const int column = row_of_node_0 + 2 * i + slot_offsets_[s];
             const double value = d == 0 ? slot_c_x_[s] : slot_c_y_[s];
             if (entries[k].column != column || !same_bits(entries[k].value, value))
-              refuse(n_x, "entry " + std::to_string(k) + " of " + row_name(row, n_x) + " is K(" +
-                              std::to_string(row) + ", " + std::to_string(entries[k].column) + ") = " +
-                              number(entries[k].value) + "; the row of node (1, " + std::to_string(j) +
-                              ") shifted by " + std::to_string(2 * (i - 1)) + " gives K(" + std::to_string(row) +
-                              ", " + std::to_string(column) + ") = " + number(value));
+              refuse(n_x, "entry " + std::to_string(k) + " of " + row_name(row, n_x) + " is K(" + std::to_string(row) +
+                              ", " + std::to_string(entries[k].column) + ") = " + number(entries[k].value) +
+                              "; the row of node (1, " + std::to_string(j) + ") shifted by " +
+                              std::to_string(2 * (i - 1)) + " gives K(" + std::to_string(row) + ", " +
+                              std::to_string(column) + ") = " + number(value));
           }
         }
     }

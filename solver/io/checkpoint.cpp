@@ -52,12 +52,13 @@ std::vector<T> read_array(hid_t group, const std::string& name, const std::strin
 /// Names of the datasets of a group.
 std::vector<std::string> members(hid_t group) {
   std::vector<std::string> names;
-  H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-             [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
-               static_cast<std::vector<std::string>*>(out)->push_back(name);
-               return 0;
-             },
-             &names);
+  H5Literate(
+      group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+        static_cast<std::vector<std::string>*>(out)->push_back(name);
+        return 0;
+      },
+      &names);
   return names;
 }
 
@@ -137,7 +138,8 @@ void flatten(const nlohmann::json& j, const std::string& prefix, std::map<std::s
 
 std::string checkpoint_path_for(const std::string& h5_path) {
   const std::string ext = ".h5";
-  const bool has_ext = h5_path.size() > ext.size() && h5_path.compare(h5_path.size() - ext.size(), ext.size(), ext) == 0;
+  const bool has_ext =
+      h5_path.size() > ext.size() && h5_path.compare(h5_path.size() - ext.size(), ext.size(), ext) == 0;
   return (has_ext ? h5_path.substr(0, h5_path.size() - ext.size()) : h5_path) + ".checkpoint.h5";
 }
 

@@ -19,10 +19,10 @@
 namespace slidewave {
 
 struct Checkpoint {
-  std::string config_json;  ///< resolved configuration of the run (RunConfig::to_json().dump())
-  std::string build;        ///< current_build() of the solver that wrote it
-  StreamPosition stream;    ///< what RUN.partial.h5 holds at this state
-  StateArrays state;        ///< the loop's evolving state (model/loop_state_arrays.hpp)
+  std::string config_json;            ///< resolved configuration of the run (RunConfig::to_json().dump())
+  std::string build;                  ///< current_build() of the solver that wrote it
+  StreamPosition stream;              ///< what RUN.partial.h5 holds at this state
+  StateArrays state;                  ///< the loop's evolving state (model/loop_state_arrays.hpp)
   std::string run_id = new_run_id();  ///< the run that wrote it (names its temporary file)
 };
 

@@ -14,8 +14,8 @@ void skip_library_cleanup_at_exit() { H5dont_atexit(); }
 namespace {
 
 struct ReasonSearch {
-  std::string os_reason;     ///< text after "error message = '" (HDF5's POSIX drivers put strerror there)
-  std::string innermost;     ///< description of the innermost error
+  std::string os_reason;  ///< text after "error message = '" (HDF5's POSIX drivers put strerror there)
+  std::string innermost;  ///< description of the innermost error
 };
 
 herr_t visit_error(unsigned n, const H5E_error2_t* error, void* data) {
@@ -26,8 +26,8 @@ herr_t visit_error(unsigned n, const H5E_error2_t* error, void* data) {
   const auto start = desc.find(key);
   if (search->os_reason.empty() && start != std::string::npos) {
     const auto end = desc.find('\'', start + key.size());
-    search->os_reason = desc.substr(start + key.size(), end == std::string::npos ? std::string::npos
-                                                                                 : end - start - key.size());
+    search->os_reason =
+        desc.substr(start + key.size(), end == std::string::npos ? std::string::npos : end - start - key.size());
   }
   return 0;
 }
@@ -98,8 +98,7 @@ Handle dataset_open(hid_t parent, const std::string& name, const std::string& fi
   return checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose, file, "open dataset " + name);
 }
 
-void write_string_attribute(hid_t object, const std::string& name, const std::string& value,
-                            const std::string& file) {
+void write_string_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& file) {
   const std::string what = "write attribute " + name + " to";
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   check(H5Tset_size(type, value.empty() ? 1 : value.size()), file, what);
@@ -173,8 +172,7 @@ void flush_to_disk(hid_t file, const std::string& path) {
   check(H5Fflush(file, H5F_SCOPE_GLOBAL), path, "flush");
   void* handle = nullptr;
   check(H5Fget_vfd_handle(file, H5P_DEFAULT, &handle), path, "get the descriptor of");
-  if (::fsync(*static_cast<int*>(handle)) != 0)
-    throw IoError("cannot sync " + path + ": " + std::strerror(errno));
+  if (::fsync(*static_cast<int*>(handle)) != 0) throw IoError("cannot sync " + path + ": " + std::strerror(errno));
 }
 
 }  // namespace slidewave::h5

@@ -51,7 +51,8 @@ OutputLock::OutputLock(const std::string& h5_path, const std::string& run_id, co
                            "; wait for it to end, or write elsewhere");
       throw IoError("cannot lock " + path_ + ": " + std::strerror(error));
     }
-    struct stat locked {}, named {};
+    struct stat locked {};
+    struct stat named {};
     if (::fstat(fd_, &locked) == 0 && ::stat(path_.c_str(), &named) == 0 && locked.st_dev == named.st_dev &&
         locked.st_ino == named.st_ino)
       break;

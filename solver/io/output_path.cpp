@@ -24,9 +24,9 @@ bool ends_with_ignoring_case(const std::string& text, const std::string& suffix)
 }
 
 bool same_file(const std::string& a, const std::string& b) {
-  struct stat sa {}, sb {};
-  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
-         sa.st_ino == sb.st_ino;
+  struct stat sa {};
+  struct stat sb {};
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 std::string folder_of(const std::string& path) {
@@ -44,8 +44,14 @@ std::string partial_path_for(const std::string& h5_path) {
 
 std::vector<std::string> run_paths(const std::string& h5_path) {
   const std::string partial = partial_path_for(h5_path);
-  return {h5_path, xdmf_path_for(h5_path), interface_xdmf_path_for(h5_path), partial, xdmf_path_for(partial),
-          interface_xdmf_path_for(partial), checkpoint_path_for(h5_path), lock_path_for(h5_path)};
+  return {h5_path,
+          xdmf_path_for(h5_path),
+          interface_xdmf_path_for(h5_path),
+          partial,
+          xdmf_path_for(partial),
+          interface_xdmf_path_for(partial),
+          checkpoint_path_for(h5_path),
+          lock_path_for(h5_path)};
 }
 
 void remove_temporaries_of(const std::string& h5_path, const std::string& run_id) {
@@ -57,8 +63,10 @@ void check_output_path(const std::string& h5_path, const std::vector<std::string
   const std::string head = "output " + h5_path + ": ";
   if (h5_path.empty() || h5_path.back() == '/') throw OutputPathError(head + "not a file name");
   if (ends_with_ignoring_case(h5_path, ".xdmf"))
-    throw OutputPathError(head + "names an XDMF file: the XDMF sidecars of the run (written next to the HDF5 "
-                          "file, X.h5 -> X.xdmf, X.interface.xdmf) would replace it; give the HDF5 name, e.g. -o run.h5");
+    throw OutputPathError(
+        head +
+        "names an XDMF file: the XDMF sidecars of the run (written next to the HDF5 "
+        "file, X.h5 -> X.xdmf, X.interface.xdmf) would replace it; give the HDF5 name, e.g. -o run.h5");
 
   const auto written = run_paths(h5_path);
   for (std::size_t i = 0; i < written.size(); ++i) {

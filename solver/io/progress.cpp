@@ -15,9 +15,9 @@ void ProgressPrinter::report(double t, double t_end, double steps_per_second, do
                              double dt) const {
   if (!enabled_) return;
   const double eta = steps_per_second > 0 ? (t_end - t) / dt / steps_per_second : 0;
-  const int written = std::fprintf(stderr, "%st = %9.1f / %.1f s  %7.0f steps/s  ETA %6.0f s  T/N = %+.4f  slipping %d/%d%s",
-               terminal_ ? "\r" : "", t, t_end, steps_per_second, eta, T_over_N, n_slipping, n_contact_nodes_,
-               terminal_ ? "" : "\n");
+  const int written = std::fprintf(
+      stderr, "%st = %9.1f / %.1f s  %7.0f steps/s  ETA %6.0f s  T/N = %+.4f  slipping %d/%d%s", terminal_ ? "\r" : "",
+      t, t_end, steps_per_second, eta, T_over_N, n_slipping, n_contact_nodes_, terminal_ ? "" : "\n");
   if (written < 0 || std::fflush(stderr) != 0) silence();
 }
 

@@ -31,19 +31,38 @@ void write_run_header(hid_t file, const std::string& path, const RunConfig& conf
   write_string_attribute(file, "config", config.to_json().dump(), path);
   const Handle setup = group_create(file, "setup", path, large_attribute_properties(H5P_GROUP_CREATE));
   write_string_attribute(setup, "config_input", provenance.config_input, path);
-  const struct { const char* name; double value; } constants[] = {
-      {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},
-      {"lambda", d.lambda}, {"h", d.h}, {"f", config.friction.f}, {"c_s", d.c_s}, {"c_l", d.c_l}, {"p0", d.p0},
-      {"V0", d.V0}, {"dt", d.dt}, {"t_end", config.time.t_end}, {"hht_alpha", config.time.hht_alpha},
-      {"t_onset_estimate", d.t_onset_estimate}};
+  const struct {
+    const char* name;
+    double value;
+  } constants[] = {{"E", config.material.E},
+                   {"nu", config.material.nu},
+                   {"rho", config.material.rho},
+                   {"H", d.H},
+                   {"lambda", d.lambda},
+                   {"h", d.h},
+                   {"f", config.friction.f},
+                   {"c_s", d.c_s},
+                   {"c_l", d.c_l},
+                   {"p0", d.p0},
+                   {"V0", d.V0},
+                   {"dt", d.dt},
+                   {"t_end", config.time.t_end},
+                   {"hht_alpha", config.time.hht_alpha},
+                   {"t_onset_estimate", d.t_onset_estimate}};
   for (const auto& c : constants) write_double_attribute(setup, c.name, c.value, path);
   if (config.substrate.present()) {  // format 3 (docs/substrate.md)
     const RunConfig body = substrate_body_config(config);
     const DerivedConstants ds = body.derived();
-    const struct { const char* name; double value; } substrate[] = {
-        {"substrate_E", body.material.E}, {"substrate_nu", body.material.nu}, {"substrate_rho", body.material.rho},
-        {"substrate_H", ds.H}, {"substrate_c_s", ds.c_s}, {"substrate_c_l", ds.c_l},
-        {"substrate_return_time", 2 * ds.H / ds.c_l}};
+    const struct {
+      const char* name;
+      double value;
+    } substrate[] = {{"substrate_E", body.material.E},
+                     {"substrate_nu", body.material.nu},
+                     {"substrate_rho", body.material.rho},
+                     {"substrate_H", ds.H},
+                     {"substrate_c_s", ds.c_s},
+                     {"substrate_c_l", ds.c_l},
+                     {"substrate_return_time", 2 * ds.H / ds.c_l}};
     for (const auto& c : substrate) write_double_attribute(setup, c.name, c.value, path);
   }
 }

@@ -1,9 +1,8 @@
 #pragma once
-// What run.h5 (format_version 2, or 3 with a substrate: docs/contracts.md section 2) says about itself: the header written
-// when the file is created (provenance and resolved configuration at the root; /setup: the verbatim
-// input and every derived constant) and the outcome (root: complete, end_reason, n_steps_done,
-// t_first_opening; /setup: u_x_preshear and opening_threshold, known after the preload), rewritten
-// whenever it changes (checkpoints, the end).
+// What run.h5 (format_version 2, or 3 with a substrate: docs/contracts.md section 2) says about itself: the header
+// written when the file is created (provenance and resolved configuration at the root; /setup: the verbatim input and
+// every derived constant) and the outcome (root: complete, end_reason, n_steps_done, t_first_opening; /setup:
+// u_x_preshear and opening_threshold, known after the preload), rewritten whenever it changes (checkpoints, the end).
 #include <hdf5.h>
 
 #include <string>

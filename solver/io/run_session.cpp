@@ -71,8 +71,8 @@ void RunSession::resume_from(Checkpoint checkpoint) {
     start_ = std::move(checkpoint);
     resumed_ = true;
     checkpoint_written_ = true;  // the checkpoint on disk counts rows the new partial file holds
-    notes_ << "slidewave: resuming from step " << start_.state.integers.at("counters").at(0) << " ("
-           << checkpoint_path_ << ")\n";
+    notes_ << "slidewave: resuming from step " << start_.state.integers.at("counters").at(0) << " (" << checkpoint_path_
+           << ")\n";
   } catch (const StreamMismatch& e) {
     writer_->discard();
     writer_.reset();

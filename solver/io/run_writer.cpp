@@ -133,7 +133,6 @@ struct RunWriter::Files {
   }
 };
 
-
 RunWriter::RunWriter(std::string working_path, const RunConfig& config, const Provenance& provenance)
     : path_(std::move(working_path)), run_id_(provenance.run_id), files_(std::make_unique<Files>()) {
   for (const auto& c : kGlobalColumns) global_columns_.push_back(&c);
@@ -304,8 +303,8 @@ void RunWriter::check_own_file() const {
   const std::string id = has_id > 0 ? h5::read_string_attribute(file, "run_id", path_) : "none";
   if (id != run_id_)
     throw IoError(head + "another run wrote it (run_id " + excerpt(id) + ", this run " + run_id_ + ")");
-  for (const auto& [name, n_rows] : {std::pair{"/global/t", position_.n_global_rows},
-                                     std::pair{"/interface/t", position_.n_interface_rows}}) {
+  for (const auto& [name, n_rows] :
+       {std::pair{"/global/t", position_.n_global_rows}, std::pair{"/interface/t", position_.n_interface_rows}}) {
     if (n_rows == 0) continue;
     const Handle set = h5::dataset_open(file, name, path_);
     Handle space(H5Dget_space(set), H5Sclose);
@@ -360,6 +359,5 @@ void RunWriter::discard() noexcept {
   if (files_) files_->close();
   std::remove(path_.c_str());
 }
-
 
 }  // namespace slidewave

@@ -33,8 +33,8 @@ struct StreamPosition {
   std::int64_t n_snapshots = 0;
   std::map<std::string, std::uint64_t> digests;  ///< dataset path -> digest of its elements
   bool operator==(const StreamPosition& o) const {
-    return n_global_rows == o.n_global_rows && n_interface_rows == o.n_interface_rows &&
-           n_snapshots == o.n_snapshots && digests == o.digests;
+    return n_global_rows == o.n_global_rows && n_interface_rows == o.n_interface_rows && n_snapshots == o.n_snapshots &&
+           digests == o.digests;
   }
 };
 

@@ -30,12 +30,14 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
       hsize_t dims[2] = {0, 0};
       H5Sget_simple_extent_dims(space, dims, nullptr);
       if (static_cast<std::int64_t>(dims[0]) < first + n)
-        throw StreamMismatch(earlier_path + ": " + name + " holds " + std::to_string(dims[0]) + " rows, the checkpoint counts " +
-                             std::to_string(first + n));
-      const hsize_t start[2] = {static_cast<hsize_t>(first), 0}, count[2] = {static_cast<hsize_t>(n), static_cast<hsize_t>(cols)};
+        throw StreamMismatch(earlier_path + ": " + name + " holds " + std::to_string(dims[0]) +
+                             " rows, the checkpoint counts " + std::to_string(first + n));
+      const hsize_t start[2] = {static_cast<hsize_t>(first), 0},
+                    count[2] = {static_cast<hsize_t>(n), static_cast<hsize_t>(cols)};
       h5::check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr), earlier_path, "select in");
       Handle memory(H5Screate_simple(cols ? 2 : 1, count, nullptr), H5Sclose);
-      h5::check(H5Dread(set, h5::native_type<T>(), memory, space, H5P_DEFAULT, out), earlier_path, "read " + name + " from");
+      h5::check(H5Dread(set, h5::native_type<T>(), memory, space, H5P_DEFAULT, out), earlier_path,
+                "read " + name + " from");
     };
     const std::int64_t block_rows = static_cast<std::int64_t>(kGlobalBlockRows);
     for (std::int64_t first = 0; first < position.n_global_rows; first += block_rows) {
@@ -67,7 +69,8 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
     const bool substrate = position.n_snapshots > 0 && H5Lexists(earlier, "substrate_snapshots", H5P_DEFAULT) > 0;
     if (position.n_snapshots > 0) {
       block.snapshot_mesh.coordinates = h5::read_dataset<double>(earlier, "/snapshots/coordinates", earlier_path);
-      block.snapshot_mesh.connectivity = h5::read_dataset<std::int64_t>(earlier, "/snapshots/connectivity", earlier_path);
+      block.snapshot_mesh.connectivity =
+          h5::read_dataset<std::int64_t>(earlier, "/snapshots/connectivity", earlier_path);
     }
     if (substrate) {
       block.substrate_snapshot_mesh.coordinates =
@@ -83,8 +86,8 @@ void RunWriter::copy_prefix(const std::string& earlier_path, const StreamPositio
                         h5::read_dataset<double>(one, "velocity", earlier_path)};
       block.snapshots.push_back(std::move(snapshot));
       if (substrate) {
-        const Handle below = h5::group_open(earlier, "/substrate_snapshots/" + snapshot_id(static_cast<std::size_t>(k)),
-                                            earlier_path);
+        const Handle below =
+            h5::group_open(earlier, "/substrate_snapshots/" + snapshot_id(static_cast<std::size_t>(k)), earlier_path);
         block.substrate_snapshots.push_back(Snapshot{h5::read_double_attribute(below, "t", earlier_path),
                                                      h5::read_dataset<double>(below, "displacement", earlier_path),
                                                      h5::read_dataset<double>(below, "velocity", earlier_path)});

@@ -53,8 +53,7 @@ void end_temporal_collection(std::ofstream& out, const std::string& path) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
-std::string hdf_item(const std::string& dimensions, const char* number_type, int precision,
-                     const std::string& target) {
+std::string hdf_item(const std::string& dimensions, const char* number_type, int precision, const std::string& target) {
   return "<DataItem Dimensions=\"" + dimensions + "\" NumberType=\"" + number_type + "\" Precision=\"" +
          std::to_string(precision) + "\" Format=\"HDF\">" + target + "</DataItem>";
 }
@@ -66,9 +65,8 @@ struct InterfaceField {
 };
 // The /interface series of docs/contracts.md section 2, (n_out x n_c) each.
 constexpr InterfaceField kInterfaceFields[] = {
-    {"slip_velocity", "Float", 8},       {"slip", "Float", 8},  {"opening", "Float", 8},
-    {"normal_traction", "Float", 8},     {"tangential_traction", "Float", 8},
-    {"state", "Char", 1},
+    {"slip_velocity", "Float", 8},       {"slip", "Float", 8}, {"opening", "Float", 8}, {"normal_traction", "Float", 8},
+    {"tangential_traction", "Float", 8}, {"state", "Char", 1},
 };
 
 bool has_interface(const RunRecord& record) { return !record.interface.t.empty(); }
@@ -134,16 +132,14 @@ void write_interface_xdmf(const std::string& path, const std::string& h5_name, c
   for (size_t k = 0; k < s.t.size(); ++k) {
     begin_time_step(out, "interface", 5, k, s.t[k]);
     out << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"1 " << n_c << "\"/>\n"
-        << "    <Geometry GeometryType=\"VXVY\">\n     "
-        << hdf_item(n_c, "Float", 8, h5_name + ":/interface/x") << "\n"
+        << "    <Geometry GeometryType=\"VXVY\">\n     " << hdf_item(n_c, "Float", 8, h5_name + ":/interface/x") << "\n"
         << "     <DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0</DataItem>\n"
         << "    </Geometry>\n";
     for (const auto& field : kInterfaceFields)
       out << "    <Attribute Name=\"" << field.name << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
           << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 " << n_c << "\" Type=\"HyperSlab\">\n"
           << "      <DataItem Dimensions=\"3 2\" Format=\"XML\">" << k << " 0 1 1 1 " << n_c << "</DataItem>\n      "
-          << hdf_item(n_out + " " + n_c, field.number_type, field.precision,
-                      h5_name + ":/interface/" + field.name)
+          << hdf_item(n_out + " " + n_c, field.number_type, field.precision, h5_name + ":/interface/" + field.name)
           << "\n     </DataItem>\n    </Attribute>\n";
     out << "   </Grid>\n";
   }

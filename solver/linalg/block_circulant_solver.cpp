@@ -75,7 +75,9 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
     }
 
   // Significant entries of the reference blocks, to find the ones another slice lacks.
-  struct Position { int b, r, c; };
+  struct Position {
+    int b, r, c;
+  };
   std::vector<Position> significant;
   for (int b = 0; b < 3; ++b)
     for (int c = 0; c < s; ++c)
@@ -90,8 +92,8 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
         const int b = block_index(i_r, i);
         const double reference = b < 0 ? 0.0 : blocks.B[b](r, c);
         if (std::fabs(it.value() - reference) > tol) {
-          why << "A(" << it.index() << ", " << column(i, c) << ") = " << it.value() << " differs from "
-              << reference << ", its counterpart in slice 0 (column slice " << i << ", row slice " << i_r << ")";
+          why << "A(" << it.index() << ", " << column(i, c) << ") = " << it.value() << " differs from " << reference
+              << ", its counterpart in slice 0 (column slice " << i << ", row slice " << i_r << ")";
           return why.str();
         }
         if (b >= 0) stamp[at(b, r, c)] = i;
@@ -99,8 +101,10 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
     for (const Position& q : significant)
       if (stamp[at(q.b, q.r, q.c)] != i) {
         why << "column slice " << i << " lacks the entry (" << q.r << ", " << q.c << ") of block "
-            << (q.b == 0 ? "B_{-1}" : q.b == 1 ? "B_0" : "B_{+1}") << " = " << blocks.B[q.b](q.r, q.c)
-            << " of slice 0";
+            << (q.b == 0   ? "B_{-1}"
+                : q.b == 1 ? "B_0"
+                           : "B_{+1}")
+            << " = " << blocks.B[q.b](q.r, q.c) << " of slice 0";
         return why.str();
       }
   }
@@ -155,7 +159,13 @@ bool BlockCirculantSolver::is_block_circulant(const Eigen::SparseMatrix<double>&
 }
 
 BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, int threads)
-    : n_x_(n_x), n_y_(n_y), s_(2 * n_y), p_(0), n_modes_(n_x / 2 + 1), lanes_((n_x / 2 + 2) / 2 * 2), threads_(threads) {
+    : n_x_(n_x),
+      n_y_(n_y),
+      s_(2 * n_y),
+      p_(0),
+      n_modes_(n_x / 2 + 1),
+      lanes_((n_x / 2 + 2) / 2 * 2),
+      threads_(threads) {
   if (threads < 1)
     throw std::invalid_argument("BlockCirculantSolver: threads must be >= 1 (got " + std::to_string(threads) + ")");
   // 1. Structure and the blocks of slice 0.
@@ -176,9 +186,7 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   std::vector<double> D(s);
   for (int m = 0; m < n_modes_; ++m) {
     // e^{i theta} exactly real at m = 0 and at the Nyquist mode, so that their imaginary parts vanish.
-    const Complex phase = m == 0 ? Complex(1, 0)
-                          : 2 * m == n_x ? Complex(-1, 0)
-                                         : std::polar(1.0, 2 * kPi * m / n_x);
+    const Complex phase = m == 0 ? Complex(1, 0) : 2 * m == n_x ? Complex(-1, 0) : std::polar(1.0, 2 * kPi * m / n_x);
     for (int r = 0; r < s; ++r)
       for (int c = std::max(0, r - p); c <= r; ++c)
         entry(r, c) = blocks.B[1](r, c) + blocks.B[2](r, c) * phase + blocks.B[0](r, c) * std::conj(phase);
@@ -194,8 +202,8 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
       for (int q = first; q < r; ++q) d -= std::norm(entry(r, q)) * D[q];
       if (!(d > 0) || !std::isfinite(d)) {
         std::ostringstream msg;
-        msg << "BlockCirculantSolver: A(theta) is not positive definite at wavenumber m = " << m << " (pivot "
-            << r << " = " << d << "): the matrix is not SPD";
+        msg << "BlockCirculantSolver: A(theta) is not positive definite at wavenumber m = " << m << " (pivot " << r
+            << " = " << d << "): the matrix is not SPD";
         throw std::runtime_error(msg.str());
       }
       D[r] = d;
@@ -247,9 +255,10 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
     for (int k : {work, kept, contact}) {
       plans_->forward[k] = fftw_plan_guru_split_dft_r2c(1, &forward_dim, 1, &forward_loop, data.data(), plans_->re[k],
                                                         plans_->im[k], flags);
-      plans_->inverse[k] = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 1, &inverse_loop, plans_->re[k],
-                                                        plans_->im[k], data.data(), flags);
-      if (!plans_->forward[k] || !plans_->inverse[k]) throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
+      plans_->inverse[k] = fftw_plan_guru_split_dft_c2r(1, &inverse_dim, 1, &inverse_loop, plans_->re[k], plans_->im[k],
+                                                        data.data(), flags);
+      if (!plans_->forward[k] || !plans_->inverse[k])
+        throw std::runtime_error("BlockCirculantSolver: FFTW planning failed");
     }
   }
   prepare_split();
@@ -260,9 +269,9 @@ BlockCirculantSolver::BlockCirculantSolver(BlockCirculantSolver&&) noexcept = de
 BlockCirculantSolver& BlockCirculantSolver::operator=(BlockCirculantSolver&&) noexcept = default;
 
 std::size_t BlockCirculantSolver::memory_bytes() const {
-  return sizeof(double) * (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size() +
-                           G_re_.size() + G_im_.size() + kept_re_.size() + kept_im_.size() + contact_re_.size() +
-                           contact_im_.size());
+  return sizeof(double) *
+         (L_re_.size() + L_im_.size() + inv_D_.size() + work_re_.size() + work_im_.size() + G_re_.size() +
+          G_im_.size() + kept_re_.size() + kept_im_.size() + contact_re_.size() + contact_im_.size());
 }
 
 namespace {

@@ -86,8 +86,7 @@ class BlockCirculantSolver : public SplitSolver {
 
   /// True if A has the structure the constructor requires (see there); otherwise false, and the first
   /// mismatch found is written to *reason when reason is not null.
-  static bool is_block_circulant(const Eigen::SparseMatrix<double>& A, int n_x, int n_y,
-                                 std::string* reason = nullptr);
+  static bool is_block_circulant(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, std::string* reason = nullptr);
 
  private:
   struct FftPlans;  // FFTW plans, kept out of this header
@@ -101,7 +100,7 @@ class BlockCirculantSolver : public SplitSolver {
   void inverse_transform(Spectrum spectrum, double* x, int j0, int j1) const;
   /// y <- A^{-1} y / n_x on a padded (s + 2p)-row spectrum, lanes m0 <= m < m1.
   void sweep(double* y_re, double* y_im, int m0, int m1) const;
-  void prepare_split();                          ///< G and the split workspace (block_circulant_split.cpp)
+  void prepare_split();  ///< G and the split workspace (block_circulant_split.cpp)
 
   int n_x_, n_y_;
   int s_;        ///< slice size 2 n_y

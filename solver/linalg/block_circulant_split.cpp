@@ -30,7 +30,8 @@ void BlockCirculantSolver::prepare_split() {
   kept_valid_ = false;
 }
 
-void BlockCirculantSolver::solve_free(const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::Ref<Eigen::VectorXd> u_contact) {
+void BlockCirculantSolver::solve_free(const Eigen::Ref<const Eigen::VectorXd>& b,
+                                      Eigen::Ref<Eigen::VectorXd> u_contact) {
   assert(b.size() == size() && u_contact.size() == n_contact());
   double* X_re = kept_re_.data() + static_cast<std::size_t>(p_) * lanes_;
   double* X_im = kept_im_.data() + static_cast<std::size_t>(p_) * lanes_;
@@ -75,7 +76,8 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
         X_im[k] += G0_re[k] * R0_im[m] + G0_im[k] * R0_re[m] + G1_re[k] * R1_im[m] + G1_im[k] * R1_re[m];
       }
     }
-    inverse_transform(Spectrum::kept, u.data(), mesh_rows.begin, mesh_rows.end);  // destroys X: one solve_loaded per solve_free
+    inverse_transform(Spectrum::kept, u.data(), mesh_rows.begin,
+                      mesh_rows.end);  // destroys X: one solve_loaded per solve_free
   });
   kept_valid_ = false;
 }

@@ -24,7 +24,7 @@ namespace slidewave {
 /// The HHT terms booked so far and what the next step needs of the current time (all empty/zero when
 /// output.energy_decomposition is none).
 struct HhtDissipation {
-  double gamma = 0, beta = 0, shift = 0;  ///< each term's dissipation since t = 0 (J/m)
+  double gamma = 0, beta = 0, shift = 0;   ///< each term's dissipation since t = 0 (J/m)
   Eigen::VectorXd v_f, acc_f, Ma_f, Ku_f;  ///< v, a, M_ff a, K u of the free rows at the current time
   Eigen::VectorXd shift_f;                 ///< s at the current time (free rows)
   double total() const { return gamma + beta + shift; }
@@ -64,7 +64,7 @@ class EnergyLedger {
   Eigen::VectorXd M_fd_v_top_;  ///< M_fd v_top (constant)
   double kinetic_top_;          ///< v_top.M_top v_top (constant)
   HHTCoefficients hht_;
-  double weight_previous_;      ///< a': weight of r(n) in the equation of motion of step n -> n+1
+  double weight_previous_;  ///< a': weight of r(n) in the equation of motion of step n -> n+1
 };
 
 }  // namespace slidewave

@@ -4,8 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contact/contact_solver.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/delassus.hpp"
-#include "contact/gauss_seidel.hpp"
 #include "fem/assembly.hpp"
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -14,8 +15,7 @@
 
 namespace slidewave {
 
-LayerModel::LayerModel(const RunConfig& c)
-    : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
+LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
   K = assemble_uniform(mesh, quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration));
   M = assemble_uniform(mesh, quad4_mass(c.material.rho, d.h, c.mesh.mass));
   n_free = mesh.n_free();
@@ -66,10 +66,9 @@ PreloadState solve_preload(const LayerModel& model) {
   // With a substrate: the pair's static Delassus operator W_L + S W_S S (model/substrate.hpp).
   const LayerModel* sub = model.substrate.get();
   const auto K_static_sub = sub ? sub->factorize(sub->K_ff) : nullptr;
-  const Eigen::MatrixXd W =
-      sub ? pair_delassus(delassus_operator_periodic(*K_static, model.mesh.n_contact()),
-                          delassus_operator_periodic(*K_static_sub, sub->mesh.n_contact()))
-          : delassus_operator_periodic(*K_static, model.mesh.n_contact());
+  const Eigen::MatrixXd W = sub ? pair_delassus(delassus_operator_periodic(*K_static, model.mesh.n_contact()),
+                                                delassus_operator_periodic(*K_static_sub, sub->mesh.n_contact()))
+                                : delassus_operator_periodic(*K_static, model.mesh.n_contact());
   // The substrate's static displacement (all DOFs, its held bottom at 0) under -r, i.e. S r in its frame.
   const auto substrate_displacement = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
     Eigen::VectorXd load = Eigen::VectorXd::Zero(sub->n_free), u = Eigen::VectorXd::Zero(sub->n_free + sub->n_top);
@@ -78,7 +77,9 @@ PreloadState solve_preload(const LayerModel& model) {
     u.head(sub->n_free) = K_static_sub->solve(load);
     return u;
   };
-  GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h};
+  // The quasi-static stages slide under Coulomb's bound f r_y, whatever the law of the dynamics.
+  const ContactSolver contact_solver(W, {c.contact.tolerance, c.contact.max_iterations, model.d.p0 * model.d.h},
+                                     DelassusLayout::dense);
 
   // Contact displacements of the free (reaction-less) static response to the top displacement u_d.
   const auto free_contact_displacement = [&](const Eigen::VectorXd& u_d) -> Eigen::VectorXd {
@@ -86,12 +87,13 @@ PreloadState solve_preload(const LayerModel& model) {
   };
 
   // Quasi-static contact solve: K_ff u_f = -K_fd u_d + C^T r; local slip measured from u_x_before.
-  const auto solve_static = [&](const Eigen::VectorXd& u_d, const Eigen::VectorXd& u_contact_before,
-                                Eigen::VectorXd& r, std::vector<ContactState>& state, int& iterations) {
+  const auto solve_static = [&](const Eigen::VectorXd& u_d, const Eigen::VectorXd& u_contact_before, Eigen::VectorXd& r,
+                                std::vector<ContactState>& state, int& iterations) {
     Eigen::VectorXd rhs = -(model.K_fd * u_d);
     Eigen::VectorXd q = free_contact_displacement(u_d);
     for (int k = 0; k < n_c; k += 2) q(k) -= u_contact_before(k);
-    const auto report = solve_contact_gauss_seidel(W, q, c.friction.f, {}, settings, r, nullptr, state);
+    CoulombBounds bounds(c.friction.f);
+    const auto report = contact_solver.solve(q, bounds, r, state);
     if (!report.converged) throw std::runtime_error("preload: the quasi-static contact solve did not converge");
     iterations += report.iterations;
     Eigen::VectorXd u(model.n_free + model.n_top);
@@ -107,7 +109,9 @@ PreloadState solve_preload(const LayerModel& model) {
 
   // Stage 1: compression, warm-started from the all-stick answer W r = -q (glued interface, exact
   // when the whole interface sticks): Gauss-Seidel then only verifies it, instead of needing hundreds
-  // of sweeps from zero that stop at the tolerance, not at round-off.
+  // of sweeps from zero that stop at the tolerance, not at round-off. The dense LDLT, not the time
+  // loop's AllStickSolution (contact/all_stick.hpp): that gives the same r rounded otherwise, which moves
+  // u_x_preshear in its 15th digit and every run by what that grows to after slip onset (measured).
   const Eigen::LDLT<Eigen::MatrixXd> W_ldlt = W.ldlt();
   const Eigen::VectorXd zero_contact = Eigen::VectorXd::Zero(n_c);
   const Eigen::VectorXd u_d1 = model.top_displacement(0, u_y_top);
@@ -137,8 +141,8 @@ PreloadState solve_preload(const LayerModel& model) {
   for (size_t k = 0; k < s.state.size(); ++k)
     if (s.state[k] == ContactState::open || (!frictionless && s.state[k] != ContactState::stick)) {
       std::ostringstream msg;
-      msg << "preload: contact node " << k << " is not in stick after stage 2 (state "
-          << static_cast<int>(s.state[k]) << "); the preload must leave the interface all-closed, all-stick";
+      msg << "preload: contact node " << k << " is not in stick after stage 2 (state " << static_cast<int>(s.state[k])
+          << "); the preload must leave the interface all-closed, all-stick";
       throw std::runtime_error(msg.str());
     }
   return s;

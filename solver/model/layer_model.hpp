@@ -41,17 +41,18 @@ struct LayerModel {
 
 /// Result of the quasi-static stages (1: compression, 2: shear until T/N = preshear_ratio * f).
 struct PreloadState {
-  Eigen::VectorXd u;        ///< all DOFs
+  Eigen::VectorXd u;            ///< all DOFs
   Eigen::VectorXd u_substrate;  ///< the substrate's DOFs (its mirrored frame), empty on a rigid flat
-  Eigen::VectorXd r;        ///< contact reactions (2 per contact node: x, y)
+  Eigen::VectorXd r;            ///< contact reactions (2 per contact node: x, y)
   std::vector<ContactState> state;
-  double u_x_top;           ///< top shear displacement of stage 2 (m)
-  double T, N;              ///< forces per unit depth (N/m), T = -sum r_x, N = sum r_y
+  double u_x_top;  ///< top shear displacement of stage 2 (m)
+  double T, N;     ///< forces per unit depth (N/m), T = -sum r_x, N = sum r_y
   int contact_iterations;
 };
 
 /// Solves stages 1 and 2 through the same contact law as the dynamics (slip measured from the
-/// previous stage); with a substrate, on the pair's static Delassus operator (docs/substrate.md). Throws if the final state is not all-closed, all-stick (all-closed if f = 0).
+/// previous stage); with a substrate, on the pair's static Delassus operator (docs/substrate.md). Throws if the final
+/// state is not all-closed, all-stick (all-closed if f = 0).
 PreloadState solve_preload(const LayerModel& model);
 
 }  // namespace slidewave

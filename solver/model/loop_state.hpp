@@ -28,8 +28,8 @@ struct LoopState {
   FrictionState friction;             ///< the friction law's memory (empty for Coulomb)
   EnergySums energy;                  ///< the energy ledger's running sums and F_top
   RecorderState recording;
-  HHTState substrate;                 ///< the substrate's dynamics (its mirrored frame); empty on a rigid flat
-  EnergySums substrate_energy;        ///< the substrate's ledger (its contact work booked with S r)
+  HHTState substrate;           ///< the substrate's dynamics (its mirrored frame); empty on a rigid flat
+  EnergySums substrate_energy;  ///< the substrate's ledger (its contact work booked with S r)
 };
 
 }  // namespace slidewave

@@ -62,18 +62,21 @@ const char* const kEndReasons[] = {"t_end", "stop_after_opening"};
 
 StateArrays to_arrays(const LoopState& loop) {
   StateArrays a;
-  for_each_vector(loop, [&](const char* name, const Eigen::VectorXd& v) {
-    a.reals[name].assign(v.data(), v.data() + v.size());
-  });
+  for_each_vector(
+      loop, [&](const char* name, const Eigen::VectorXd& v) { a.reals[name].assign(v.data(), v.data() + v.size()); });
   a.reals["friction"] = loop.friction.per_node;
-  a.reals["scalars"] = {loop.t_end, loop.energy.energy_start, loop.energy.work_external,
-                        loop.energy.dissipation_friction, loop.energy.work_contact_normal,
+  a.reals["scalars"] = {loop.t_end,
+                        loop.energy.energy_start,
+                        loop.energy.work_external,
+                        loop.energy.dissipation_friction,
+                        loop.energy.work_contact_normal,
                         loop.recording.t_first_opening};
   if (loop.energy.hht.on()) a.reals["hht_terms"] = {loop.energy.hht.gamma, loop.energy.hht.beta, loop.energy.hht.shift};
   if (loop.substrate.u.size() > 0) {
     const EnergySums& e = loop.substrate_energy;
-    a.reals["substrate_sums"] = {e.energy_start, e.work_external, e.dissipation_friction, e.work_contact_normal,
-                                 e.hht.gamma, e.hht.beta, e.hht.shift};
+    a.reals["substrate_sums"] = {
+        e.energy_start, e.work_external, e.dissipation_friction, e.work_contact_normal, e.hht.gamma,
+        e.hht.beta,     e.hht.shift};
   }
   auto& contact = a.integers["contact"];
   for (const ContactState s : loop.contact) contact.push_back(static_cast<std::int64_t>(s));

@@ -33,7 +33,10 @@ SnapshotMesh snapshot_mesh(const LayerMesh& mesh) {
 }  // namespace
 
 Recorder::Recorder(const LayerModel& m, const EnergyLedger& ledger, const PreloadState& preload)
-    : model_(m), ledger_(ledger), dt_(m.d.dt), opening_threshold_(opening_threshold(m.config)),
+    : model_(m),
+      ledger_(ledger),
+      dt_(m.d.dt),
+      opening_threshold_(opening_threshold(m.config)),
       snapshot_times_(m.config.output.snapshot_times) {
   std::sort(snapshot_times_.begin(), snapshot_times_.end());
   const int n_nodes_c = m.mesh.n_contact();

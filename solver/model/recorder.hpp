@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "contact/gauss_seidel.hpp"
+#include "contact/contact_solver.hpp"
 #include "model/energy_ledger.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state.hpp"
@@ -27,8 +27,8 @@ double opening_threshold(const RunConfig& config);
 /// What a row is read from: the state, the running sums and the energies of the step.
 struct RowSource {
   const LoopState& state;
-  const EnergySums& sums;    ///< the layer's running sums
-  double e_kin, e_el;        ///< energies of the layer (J/m)
+  const EnergySums& sums;                      ///< the layer's running sums
+  double e_kin, e_el;                          ///< energies of the layer (J/m)
   const EnergySums* substrate_sums = nullptr;  ///< the substrate's running sums (null: rigid flat)
   double e_kin_substrate = 0, e_el_substrate = 0;
 };

@@ -23,8 +23,8 @@ struct InterfaceSeries {
 };
 
 struct GlobalSeries {
-  std::vector<double> t, T, N, T_over_N, energy_kinetic, energy_elastic, work_external,
-      dissipation_friction, work_contact_normal, energy_balance_residual, contact_residual;
+  std::vector<double> t, T, N, T_over_N, energy_kinetic, energy_elastic, work_external, dissipation_friction,
+      work_contact_normal, energy_balance_residual, contact_residual;
   std::vector<int> contact_iterations;
   /// Only with output.energy_decomposition = hht (model/energy_ledger.hpp): the HHT algorithmic
   /// dissipation, total and its three terms; empty otherwise.
@@ -37,7 +37,7 @@ struct Snapshot {
 };
 
 struct SnapshotMesh {
-  std::vector<double> coordinates;   ///< (n_nodes x 2)
+  std::vector<double> coordinates;         ///< (n_nodes x 2)
   std::vector<std::int64_t> connectivity;  ///< (n_elements x 4)
 };
 
@@ -51,11 +51,11 @@ struct RunRecord {
   SnapshotMesh substrate_snapshot_mesh;
   std::vector<Snapshot> substrate_snapshots;
   bool complete = false;
-  std::string end_reason;       ///< t_end | stop_after_opening | contact_not_converged | interrupted
+  std::string end_reason;  ///< t_end | stop_after_opening | contact_not_converged | interrupted
   std::int64_t n_steps_done = 0;
-  double t_first_opening = -1;  ///< stage-3 time the interface first opened (-1: never)
-  double u_x_preshear = 0;      ///< top shear displacement at the end of stage 2 (m)
-  double opening_threshold = 0; ///< opening (m) above which a node counts as open (model/recorder.hpp)
+  double t_first_opening = -1;   ///< stage-3 time the interface first opened (-1: never)
+  double u_x_preshear = 0;       ///< top shear displacement at the end of stage 2 (m)
+  double opening_threshold = 0;  ///< opening (m) above which a node counts as open (model/recorder.hpp)
   int static_contact_iterations = 0;
 };
 

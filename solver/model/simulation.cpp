@@ -8,10 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "contact/all_stick.hpp"
+#include "contact/contact_solver.hpp"
 #include "contact/delassus.hpp"
 #include "contact/friction_law.hpp"
-#include "contact/gauss_seidel.hpp"
 #include "model/energy_ledger.hpp"
 #include "model/loop_state.hpp"
 #include "model/loop_state_arrays.hpp"
@@ -184,12 +183,12 @@ bool all_stuck(const std::vector<ContactState>& state) {
 /// A step that follows an all-stick step first tries the exact all-stick solution (contact/all_stick.hpp;
 /// reported as 0 sweeps), and Gauss–Seidel only if a node would not stick.
 struct ContactStep {
-  ContactStep(int n_c, const Eigen::MatrixXd& W) : q(n_c), r_next(n_c), du(n_c), all_stick(W) {}
+  ContactStep(int n_c, const Eigen::MatrixXd& W, const GaussSeidelSettings& settings)
+      : q(n_c), r_next(n_c), du(n_c), solver(W, settings, DelassusLayout::block_circulant) {}
   /// @param u_free_substrate  null (rigid flat), or the substrate's free contact displacement (its frame):
   ///                           then q = q_L + S q_S (model/substrate.hpp)
-  GaussSeidelReport solve(const Eigen::MatrixXd& W, const Eigen::MatrixXd& W_columns, const Eigen::VectorXd& u_free,
-                          const Eigen::VectorXd* u_free_substrate, double f, const FrictionLaw& law,
-                          const GaussSeidelSettings& settings, LoopState& loop) {
+  GaussSeidelReport solve(const Eigen::VectorXd& u_free, const Eigen::VectorXd* u_free_substrate,
+                          const FrictionLaw& law, LoopState& loop) {
     q = u_free.head(q.size());
     for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
     if (u_free_substrate)
@@ -197,15 +196,14 @@ struct ContactStep {
         q(2 * k) -= (*u_free_substrate)(2 * k) - loop.substrate.u(2 * k);
         q(2 * k + 1) += (*u_free_substrate)(2 * k + 1);
       }
-    law.bounds(loop.friction, bounds);
+    const std::unique_ptr<FrictionBounds> bounds = law.bounds(loop.friction);
     r_next = loop.dynamics.r;
-    if (all_stuck(loop.contact) && all_stick.solve(q, f, bounds, r_next, loop.contact))
+    if (all_stuck(loop.contact) && solver.solve_all_stick(q, *bounds, r_next, loop.contact))
       return GaussSeidelReport{0, 0.0, true};
-    return solve_contact_gauss_seidel(W, q, f, bounds, settings, r_next, nullptr, loop.contact, &W_columns);
+    return solver.solve(q, *bounds, r_next, loop.contact);
   }
   Eigen::VectorXd q, r_next, du;  ///< du: contact displacement increment of the step
-  std::vector<double> bounds;
-  AllStickSolution all_stick;
+  ContactSolver solver;
 };
 
 }  // namespace
@@ -232,7 +230,6 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       sub ? pair_delassus(stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2),
                           sub->delassus())
           : stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
-  const Eigen::MatrixXd W_columns = delassus_periodic_columns(W);
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
 
@@ -263,14 +260,17 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   // 4. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
-  ContactStep contact(n_c, W);
+  ContactStep contact(n_c, W, settings);
   // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
   const auto top_after = [&](std::int64_t step) {
     return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
   };
   Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
   while (failure.empty() && loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
-    if (stop_requested && stop_requested->load()) { failure = "interrupted"; break; }
+    if (stop_requested && stop_requested->load()) {
+      failure = "interrupted";
+      break;
+    }
     const double t = (loop.step + 1) * hht.dt;
     // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
     stepper.predict(s, u_d_next);
@@ -283,9 +283,11 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     }
     watch.lap(&StepProfile::free_solve);
     // 4b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
-    const GaussSeidelReport report =
-        contact.solve(W, W_columns, u_free, u_free_substrate, c.friction.f, *friction, settings, loop);
-    if (!report.converged) { failure = "contact_not_converged"; break; }
+    const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
+    if (!report.converged) {
+      failure = "contact_not_converged";
+      break;
+    }
     watch.lap(&StepProfile::contact);
     // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
     u_d_following = top_after(loop.step + 2);

@@ -14,7 +14,7 @@ RunConfig substrate_body_config(const RunConfig& layer) {
   body.mesh.elements_per_H = n_y;
   body.geometry.H = n_y * d.h;  // the layer's h exactly (H_s / n_y may differ from it by round-off)
   body.geometry.lambda_over_H = static_cast<double>(d.n_x) / n_y;
-  body.time.dt = d.dt;          // the layer's step (its ledger and stepper use the model's dt)
+  body.time.dt = d.dt;  // the layer's step (its ledger and stepper use the model's dt)
   body.output.snapshot_times.clear();
   return body;
 }

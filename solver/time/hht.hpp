@@ -11,8 +11,7 @@ namespace slidewave {
 
 struct HHTCoefficients {
   double alpha, beta, gamma, dt;
-  explicit HHTCoefficients(double a, double step)
-      : alpha(a), beta((1 + a) * (1 + a) / 4), gamma(0.5 + a), dt(step) {}
+  explicit HHTCoefficients(double a, double step) : alpha(a), beta((1 + a) * (1 + a) / 4), gamma(0.5 + a), dt(step) {}
   /// Coefficient of M in the effective matrix K_eff = M / (beta dt^2) + (1 - alpha) K.
   double mass_factor() const { return 1.0 / (beta * dt * dt); }
 };

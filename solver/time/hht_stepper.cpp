@@ -6,8 +6,13 @@
 
 namespace slidewave {
 
+Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const Eigen::SparseMatrix<double>& M_ff,
+                                             const Eigen::SparseMatrix<double>& K_ff) {
+  return hht.mass_factor() * M_ff + (1 - hht.alpha) * K_ff;
+}
+
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system) {
-  return hht.mass_factor() * system.M_ff + (1 - hht.alpha) * system.K_ff;
+  return effective_matrix(hht, system.M_ff, system.K_ff);
 }
 
 HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& hht, bool alpha_weighted,
@@ -77,9 +82,30 @@ void HHTStepper::multiply_K(const Eigen::VectorXd& u, Eigen::VectorXd& Ku) const
 
 namespace {
 
+/// The coefficients of the predictor and of the free solve's right-hand side.
+struct PredictorCoefficients {
+  double dt, c, mass, a;  ///< c = dt^2 (1/2 - beta), mass = 1 / (beta dt^2), a = alpha
+};
+
+/// The predictor u~ = u + dt v + c a, of a displacement or (the same relation) of its mass product.
+inline double predicted(double u, double v, double acc, const PredictorCoefficients& k) {
+  return u + k.dt * v + k.c * acc;
+}
+
+/// One row of the free solve's right-hand side M u~ / (beta dt^2) - (1-a) K_fd u_d(n+1) - a K u(n), from the
+/// mass products M u, M v, M a of time n, Kd = (1-a) K_fd u_d(n+1) and Ku = K u(n) (without a' C^T r(n)).
+inline double free_solve_rhs(double Mu, double Mv, double Ma, double Kd, double Ku, const PredictorCoefficients& k) {
+  return k.mass * predicted(Mu, Mv, Ma, k) - Kd - k.a * Ku;
+}
+
+PredictorCoefficients predictor_coefficients(const HHTCoefficients& hht) {
+  return {hht.dt, hht.dt * hht.dt * (0.5 - hht.beta), hht.mass_factor(), hht.alpha};
+}
+
 /// The coefficients of the mass-product update of correct().
 struct MassCoefficients {
-  double k_next, a, w, w_previous, dt, g, g_old, b, c, mass;  ///< k_next = -(1-a), b = beta dt^2
+  double k_next, w, w_previous, g, g_old, b;  ///< k_next = -(1-a), b = beta dt^2
+  PredictorCoefficients predictor;
 };
 
 /// n rows of the mass-product update (formulas in correct()); kForces: the contact rows, which carry
@@ -91,14 +117,15 @@ void update_mass_rows(const double* __restrict Ku_next, const double* __restrict
                       double* __restrict Mv, double* __restrict Mu, double* __restrict rhs, long n,
                       const MassCoefficients& coefficients) {
   const MassCoefficients k = coefficients;
+  const PredictorCoefficients& p = k.predictor;
   for (long i = 0; i < n; ++i) {
-    double Ma_i = k.k_next * Ku_next[i] - k.a * Ku[i];
+    double Ma_i = k.k_next * Ku_next[i] - p.a * Ku[i];
     if constexpr (kForces) Ma_i = Ma_i + (k.w * r_new[i] + k.w_previous * r_old[i]);
-    const double Mu_tilde = Mu[i] + k.dt * Mv[i] + k.c * Ma[i];
-    Mv[i] += k.dt * (k.g_old * Ma[i] + k.g * Ma_i);
+    const double Mu_tilde = predicted(Mu[i], Mv[i], Ma[i], p);
+    Mv[i] += p.dt * (k.g_old * Ma[i] + k.g * Ma_i);
     Ma[i] = Ma_i;
     Mu[i] = Mu_tilde + k.b * Ma_i;
-    if constexpr (kPredict) rhs[i] = k.mass * (Mu[i] + k.dt * Mv[i] + k.c * Ma_i) - Kd[i] - k.a * Ku_next[i];
+    if constexpr (kPredict) rhs[i] = free_solve_rhs(Mu[i], Mv[i], Ma_i, Kd[i], Ku_next[i], p);
   }
 }
 
@@ -108,8 +135,8 @@ void update_mass_rows_between(int begin, int end, const double* Ku_next, const d
                               const double* r_old, const double* Kd, double* Ma, double* Mv, double* Mu, double* rhs,
                               const MassCoefficients& k) {
   update_mass_rows<kForces, kPredict>(Ku_next + begin, Ku + begin, kForces ? r_new + begin : nullptr,
-                                      kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin,
-                                      Mu + begin, rhs + begin, end - begin, k);
+                                      kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin, Mu + begin,
+                                      rhs + begin, end - begin, k);
 }
 
 }  // namespace
@@ -121,14 +148,12 @@ void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   }
   predicted_ = false;
   const int n_f = system_.n_free;
-  const double dt = hht_.dt;
   prescribe(u_d_next);
   // M u~ = M u + dt M v + c M a;  rhs = M u~ / (beta dt^2) - (1-a) K_fd u_d - a K u
-  const double c = dt * dt * (0.5 - hht_.beta), mass = hht_.mass_factor(), a = hht_.alpha;
-  const double *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(), *Ma = s.Ma_f.data(), *Ku = s.Ku.data(),
-               *Kd = K_fd_u_d_.data();
+  const PredictorCoefficients k = predictor_coefficients(hht_);
+  const double *Mu = s.Mu_f.data(), *Mv = s.Mv_f.data(), *Ma = s.Ma_f.data(), *Ku = s.Ku.data(), *Kd = K_fd_u_d_.data();
   double* __restrict rhs = rhs_.data();
-  for (int i = 0; i < n_f; ++i) rhs[i] = mass * (Mu[i] + dt * Mv[i] + c * Ma[i]) - Kd[i] - a * Ku[i];
+  for (int i = 0; i < n_f; ++i) rhs[i] = free_solve_rhs(Mu[i], Mv[i], Ma[i], Kd[i], Ku[i], k);
   add_previous_contact_forces(s.r);
 }
 
@@ -157,15 +182,15 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen
   contact_load_.noalias() = w_ * r_next;
   K_eff_->solve_loaded(contact_load_, u_work_.head(n_f));
   u_work_.tail(n_d) = u_d_next_;
-  const double g = hht_.gamma, g_old = 1 - hht_.gamma, mass = hht_.mass_factor();
-  const double c = dt * dt * (0.5 - hht_.beta);
+  const double g = hht_.gamma, g_old = 1 - hht_.gamma;
+  const PredictorCoefficients p = predictor_coefficients(hht_);
   {
     // u~ = u + dt v + c a;  a(n+1) = (u(n+1) - u~) / (beta dt^2);  v += dt ((1-gamma) a(n) + gamma a(n+1))
     const double *u_next = u_work_.data(), *u = s.u.data();
-    double *__restrict v = s.v.data(), *__restrict acc = s.acc.data();
+    double* __restrict v = s.v.data(), * __restrict acc = s.acc.data();
     for (int i = 0; i < n_f; ++i) {
-      const double u_tilde = u[i] + dt * v[i] + c * acc[i];
-      const double acc_next = mass * (u_next[i] - u_tilde);
+      const double u_tilde = predicted(u[i], v[i], acc[i], p);
+      const double acc_next = p.mass * (u_next[i] - u_tilde);
       v[i] += dt * (g_old * acc[i] + g * acc_next);
       acc[i] = acc_next;
     }
@@ -180,7 +205,7 @@ void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen
   // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + w C^T r(n+1) + a' C^T r(n);
   // M v += dt ((1-gamma) M a(n) + gamma M a(n+1));  M u = M u~ + beta dt^2 M a(n+1)
   // [and the next step's rhs from M u~ = M u + dt M v + c M a at n+1]
-  const MassCoefficients k{-(1 - a), a, w_, w_previous_, dt, g, g_old, hht_.beta * dt * dt, c, mass};
+  const MassCoefficients k{-(1 - a), w_, w_previous_, g, g_old, hht_.beta * dt * dt, p};
   const double *Ku_next = Ku_next_.data(), *Ku = s.Ku.data(), *r_new = r_next.data(), *r_old = s.r.data(),
                *Kd = K_fd_u_d_.data();
   double *Ma = s.Ma_f.data(), *Mv = s.Mv_f.data(), *Mu = s.Mu_f.data(), *rhs = rhs_.data();

@@ -47,13 +47,16 @@ struct PartitionedSystem {
 
 /// Everything the step carries from one time to the next (a checkpoint of the dynamics).
 struct HHTState {
-  Eigen::VectorXd u, v, acc;  ///< displacement, velocity, acceleration (all DOFs; acc = 0 on prescribed)
-  Eigen::VectorXd Ku;         ///< K u (all DOFs)
+  Eigen::VectorXd u, v, acc;         ///< displacement, velocity, acceleration (all DOFs; acc = 0 on prescribed)
+  Eigen::VectorXd Ku;                ///< K u (all DOFs)
   Eigen::VectorXd Mu_f, Mv_f, Ma_f;  ///< M_ff u_f, M_ff v_f, M_ff a_f (free rows)
-  Eigen::VectorXd r;          ///< contact forces of the current time, weighted into the next step by a'
+  Eigen::VectorXd r;                 ///< contact forces of the current time, weighted into the next step by a'
 };
 
 /// Effective matrix K_eff = M_ff / (beta dt^2) + (1 - alpha) K_ff.
+Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const Eigen::SparseMatrix<double>& M_ff,
+                                             const Eigen::SparseMatrix<double>& K_ff);
+/// The same, of the system's blocks.
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system);
 
 class HHTStepper {

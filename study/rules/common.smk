@@ -8,6 +8,7 @@ import re
 from pathlib import Path
 
 REPO = Path(workflow.basedir).resolve()  # on sys.path (the Snakefile's folder)
+from study import figure_kinds
 from study import resources as study_resources
 from study import run_store
 from study import sweeps as study_sweeps
@@ -138,7 +139,7 @@ def figure_files(sweep):
     spec = sweep_spec(sweep)
     files = []
     for kind in spec.get("products", []):
-        if kind in ("phase_diagram", "celerity_vs_nu", "deviation_map", "tn_curves", "tn_aligned", "pulse_spacing", "convergence"):
+        if kind in figure_kinds.PER_SWEEP:
             files += figure(sweep, kind)
         elif kind == "spacetime":
             for field in spec.get("maps", {}).get("fields", ["state"]):

@@ -1,7 +1,9 @@
 """study/config.yaml against its schema, and the expansion of sweeps into named run points."""
 
 import csv
+import importlib.util
 import json
+import re
 import subprocess
 
 import pytest
@@ -9,7 +11,7 @@ import yaml
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
-from study import sweeps
+from study import figure_kinds, sweeps
 from study.make_run_config import run_config
 
 from .conftest import REPO
@@ -166,3 +168,23 @@ def test_the_time_step_is_a_point_parameter_named_only_off_the_paper_value(study
                      "nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced",
                      "nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced_dt1"]
     assert [run_config(spec(study_config, "timestep", name))["time"]["dt_times_cs"] for name in names] == [0.25, 0.5, 1.0]
+
+
+def test_the_figure_kinds_are_the_one_list(study_config):
+    """study/figure_kinds.py is the list; the static schema, the rules, the scripts and the report's
+    captions name the same kinds."""
+    schema = yaml.safe_load(open(SCHEMA))
+    products = schema["definitions"]["sweep"]["properties"]["products"]["items"]["enum"]
+    assert sorted(products) == sorted(figure_kinds.PRODUCTS)
+    reserved = set(schema["properties"]["sweeps"]["propertyNames"]["not"]["enum"])
+    rules = set(re.findall(r"^rule (fig_\w+):", (REPO / "study" / "rules" / "figures.smk").read_text(), re.MULTILINE))
+    spec = importlib.util.spec_from_file_location("report", REPO / "study" / "scripts" / "report.py")
+    report = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(report)
+    for kind in figure_kinds.FIGURE_KINDS:
+        assert f"fig_{kind}" in rules and f"fig_{kind}" in reserved, kind
+        assert (REPO / "figures" / f"{kind}.py").is_file(), kind
+        assert any(stem.startswith(kind) for stem in report.CAPTIONS), kind
+    assert rules == {f"fig_{kind}" for kind in figure_kinds.FIGURE_KINDS}
+    for sweep in study_config["sweeps"].values():
+        assert set(sweep.get("products", [])) <= set(figure_kinds.PRODUCTS)

@@ -10,8 +10,10 @@
 #include <random>
 
 #include "contact/all_stick.hpp"
+#include "contact/contact_solver.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/delassus.hpp"
-#include "contact/gauss_seidel.hpp"
+#include "contact/prakash_clifton.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "test_support.hpp"
@@ -27,9 +29,7 @@ Eigen::MatrixXd layer_delassus() {
   const RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", 8}}}});
   const LayerModel model(config);
   const HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-  const PartitionedSystem system{model.K, model.K_ff, model.M_ff, model.M_ff_rows, model.K_fd,
-                                 model.n_free, model.n_top, model.n_contact_dofs};
-  const auto K_eff = model.factorize(effective_matrix(hht, system));
+  const auto K_eff = model.factorize(effective_matrix(hht, model.M_ff, model.K_ff));
   return delassus_operator_periodic(*K_eff, model.n_contact_dofs / 2);
 }
 
@@ -51,7 +51,8 @@ struct Sweeps {
 };
 Sweeps gauss_seidel(const Eigen::MatrixXd& W, const Eigen::VectorXd& q) {
   Sweeps out{Eigen::VectorXd::Zero(q.size()), {}};
-  const auto report = solve_contact_gauss_seidel(W, q, kF, {}, {1e-13, 100000, 1.0}, out.r, nullptr, out.state);
+  CoulombBounds bounds(kF);
+  const auto report = ContactSolver(W, {1e-13, 100000, 1.0}, DelassusLayout::dense).solve(q, bounds, out.r, out.state);
   EXPECT_TRUE(report.converged);
   return out;
 }
@@ -67,7 +68,7 @@ TEST(AllStick, ReturnsTheReactionsOfAStickingInterface) {
     const Eigen::VectorXd q = -W * r_made;  // y = q + W r_made = 0: every node sticks
     Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * n);
     std::vector<ContactState> state(n, ContactState::open);
-    ASSERT_TRUE(all_stick.solve(q, kF, {}, r, state)) << "trial " << trial;
+    ASSERT_TRUE(all_stick.solve(q, CoulombBounds(kF), r, state)) << "trial " << trial;
     EXPECT_LE((r - r_made).cwiseAbs().maxCoeff(), 1e-12 * r_made.cwiseAbs().maxCoeff()) << "trial " << trial;
     for (ContactState s : state) EXPECT_EQ(s, ContactState::stick);
     // Gauss–Seidel reaches the same reactions to its tolerance.
@@ -83,13 +84,13 @@ TEST(AllStick, RefusesWhenOneNodeWouldSlipOrOpen) {
   const Eigen::VectorXd r_inside = sticking_reactions(n, generator);
   Eigen::VectorXd outside_cone = r_inside, pulling = r_inside;
   outside_cone(2 * 5) = 1.05 * kF * outside_cone(2 * 5 + 1);  // node 5 beyond f r_y: it slips
-  pulling(2 * 9 + 1) = -0.1;                                   // node 9 pulled: it opens
+  pulling(2 * 9 + 1) = -0.1;                                  // node 9 pulled: it opens
   pulling(2 * 9) = 0;
   for (const Eigen::VectorXd& r_made : {outside_cone, pulling}) {
     const Eigen::VectorXd q = -W * r_made;
     Eigen::VectorXd r = Eigen::VectorXd::Constant(2 * n, 3.0);
     std::vector<ContactState> state(n, ContactState::slip);
-    EXPECT_FALSE(all_stick.solve(q, kF, {}, r, state));
+    EXPECT_FALSE(all_stick.solve(q, CoulombBounds(kF), r, state));
     EXPECT_EQ(r, Eigen::VectorXd::Constant(2 * n, 3.0));
     for (ContactState s : state) EXPECT_EQ(s, ContactState::slip);
     // Not all-stick indeed: Gauss–Seidel finds a node that does not stick.
@@ -109,10 +110,10 @@ TEST(AllStick, GivenBoundsReplaceFTimesPressure) {
   for (int k = 0; k < n; ++k) bounds[k] = std::fabs(r_made(2 * k)) * 1.001 + 1e-9;
   Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * n);
   std::vector<ContactState> state;
-  EXPECT_TRUE(all_stick.solve(q, kF, bounds, r, state));
+  EXPECT_TRUE(all_stick.solve(q, PrakashCliftonBounds(kF, bounds), r, state));
   bounds[3] = 0.5 * std::fabs(r_made(6));  // node 3's bound below its stick force
   r.setZero();
-  EXPECT_FALSE(all_stick.solve(q, kF, bounds, r, state));
+  EXPECT_FALSE(all_stick.solve(q, PrakashCliftonBounds(kF, bounds), r, state));
   EXPECT_EQ(r, Eigen::VectorXd::Zero(2 * n));
 }
 

@@ -14,7 +14,7 @@
 #include "model/simulation.hpp"
 #include "same_run_support.hpp"
 #include "test_support.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 namespace {
@@ -34,9 +34,10 @@ struct Layer {
 
 Layer layer(int n_x, int n_y, Integration integration, const char* mass) {
   // lambda_over_H = n_x / n_y gives n_x columns of elements.
-  RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", std::max(n_y, 2)},
-                                                     {"integration", testing::integration_name(integration)},
-                                                     {"mass", mass}}},
+  RunConfig config = testing::make_config({{"mesh",
+                                            {{"elements_per_H", std::max(n_y, 2)},
+                                             {"integration", testing::integration_name(integration)},
+                                             {"mass", mass}}},
                                            {"geometry", {{"lambda_over_H", double(n_x) / std::max(n_y, 2)}}}});
   return {config, LayerModel(config)};
 }
@@ -49,14 +50,15 @@ TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
           const Layer l = layer(n_x, n_y, integration, mass);
           ASSERT_EQ(l.model.mesh.n_x, n_x);
           const HHTCoefficients hht(0.1, l.model.d.dt);
-          const Eigen::SparseMatrix<double> K_eff = hht.mass_factor() * l.model.M_ff + (1 - hht.alpha) * l.model.K_ff;
+          const Eigen::SparseMatrix<double> K_eff = effective_matrix(hht, l.model.M_ff, l.model.K_ff);
           const std::string where = "n_x = " + std::to_string(n_x) + " n_y = " + std::to_string(n_y) + " " +
                                     testing::integration_name(integration) + " " + mass;
           const std::vector<std::pair<const char*, Eigen::SparseMatrix<double>>> matrices = {
               {"K_eff", K_eff}, {"M_ff", l.model.M_ff}, {"K_ff", l.model.K_ff}};
           for (const auto& [name, A] : matrices) {
             std::string reason;
-            ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason)) << where << " " << name << ": " << reason;
+            ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason))
+                << where << " " << name << ": " << reason;
             const BlockCirculantSolver fft(A, n_x, n_y);
             EXPECT_EQ(fft.size(), A.rows());
             const Eigen::VectorXd b = random_vector(fft.size(), 17);

@@ -29,7 +29,8 @@ Checkpoint sample(const RunConfig& config) {
   c.state.reals["u"] = {1.0, -0.0, std::nan(""), std::numeric_limits<double>::denorm_min(), 1e308, M_PI};
   c.state.reals["empty"] = {};
   c.state.integers["step"] = {42};
-  c.state.integers["state"] = {std::numeric_limits<std::int64_t>::min(), -1, 0, std::numeric_limits<std::int64_t>::max()};
+  c.state.integers["state"] = {std::numeric_limits<std::int64_t>::min(), -1, 0,
+                               std::numeric_limits<std::int64_t>::max()};
   return c;
 }
 
@@ -48,7 +49,8 @@ TEST(Checkpoint, RoundTripIsBitExact) {
   EXPECT_EQ(read.build, written.build);
   EXPECT_TRUE(read.stream == written.stream);
   ASSERT_EQ(read.state.reals.size(), written.state.reals.size());
-  for (const auto& [name, values] : written.state.reals) EXPECT_TRUE(same_bits(read.state.reals.at(name), values)) << name;
+  for (const auto& [name, values] : written.state.reals)
+    EXPECT_TRUE(same_bits(read.state.reals.at(name), values)) << name;
   EXPECT_EQ(read.state.integers, written.state.integers);
 }
 
@@ -146,8 +148,8 @@ TEST(Checkpoint, CountersMustMatchTheRowCounts) {
   const RunConfig config = testing::make_config({{"output", {{"interface_stride", 4}}}});
   Checkpoint c = sample(config);
   c.stream = StreamPosition{};
-  c.stream.n_global_rows = 1235;      // t = 0 and 1234 steps
-  c.stream.n_interface_rows = 309;    // t = 0 and every 4th step
+  c.stream.n_global_rows = 1235;    // t = 0 and 1234 steps
+  c.stream.n_interface_rows = 309;  // t = 0 and every 4th step
   c.stream.n_snapshots = 2;
   c.state.integers["counters"] = {1234, 2, 0};
   EXPECT_EQ(inconsistent_counters(c, config), "");

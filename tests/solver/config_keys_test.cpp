@@ -59,9 +59,15 @@ TEST(ConfigKeys, SetAndGetAddressTheSameMember) {
     if (k.kind == KeyKind::choice && k.choices.size() == 1) continue;  // one allowed value: nothing else to set
     json value;
     switch (k.kind) {
-      case KeyKind::choice: value = k.choices.back() == k.default_value() ? k.choices.front() : k.choices.back(); break;
-      case KeyKind::number_list: value = json::array({1.5, 2.5}); break;
-      case KeyKind::integer: value = static_cast<long long>(k.lower->value) + 2; break;
+      case KeyKind::choice:
+        value = k.choices.back() == k.default_value() ? k.choices.front() : k.choices.back();
+        break;
+      case KeyKind::number_list:
+        value = json::array({1.5, 2.5});
+        break;
+      case KeyKind::integer:
+        value = static_cast<long long>(k.lower->value) + 2;
+        break;
       default:
         value = k.lower ? (k.upper ? 0.5 * (k.lower->value + k.upper->value) : k.lower->value + 0.125) : -0.125;
     }

@@ -54,7 +54,8 @@ TEST(Config, EveryInvalidValueIsRejectedWithKeyAndAllowedRange) {
       {{{"geometry", {{"H", 0.0}}}}, "geometry.H", "H > 0"},
       {{{"geometry", {{"H", -25.0}}}}, "geometry.H", "H > 0"},
       {{{"geometry", {{"lambda_over_H", 0.0}}}}, "geometry.lambda_over_H", "lambda_over_H > 0"},
-      {{{"geometry", {{"lambda_over_H", 1.3}}}, {"mesh", {{"elements_per_H", 16}}}}, "geometry.lambda_over_H",
+      {{{"geometry", {{"lambda_over_H", 1.3}}}, {"mesh", {{"elements_per_H", 16}}}},
+       "geometry.lambda_over_H",
        "must be an integer"},  // 20.8 elements per period
       {{{"friction", {{"f", -0.1}}}}, "friction.f", "f >= 0"},
       {{{"time", {{"dt", 0.0}}}}, "time.dt", "dt > 0"},
@@ -138,7 +139,8 @@ TEST(Config, SeveralProblemsAreReportedAtOnce) {
   ASSERT_EQ(problems.size(), 7u);
   std::string all;
   for (const auto& p : problems) all += p + "\n";
-  for (const char* key : {"material.nu", "material.E", "time.hht_alpha", "time.dt", "time.bogus", "mesh.integration", "extra"})
+  for (const char* key :
+       {"material.nu", "material.E", "time.hht_alpha", "time.dt", "time.bogus", "mesh.integration", "extra"})
     EXPECT_NE(all.find(key), std::string::npos) << key << " missing from:\n" << all;
 }
 
@@ -151,8 +153,8 @@ TEST(Config, BoundaryValuesAreAccepted) {
       {{"time", {{"hht_alpha", 1.0 / 3.0}}}},
       {{"time", {{"dt", nullptr}}}},
       {{"time", {{"dt", 0.1}}}},
-      {{"mesh", {{"elements_per_H", 2}}}},   // lambda_over_H = 2: n_x = 4
-      {{"mesh", {{"elements_per_H", 16.0}}}},  // an integral float is an integer
+      {{"mesh", {{"elements_per_H", 2}}}},                                          // lambda_over_H = 2: n_x = 4
+      {{"mesh", {{"elements_per_H", 16.0}}}},                                       // an integral float is an integer
       {{"geometry", {{"lambda_over_H", 1.5}}}, {"mesh", {{"elements_per_H", 2}}}},  // n_x = 3
       {{"loading", {{"preshear_ratio", 0.0}}}},
       {{"loading", {{"V0_over_cs", 0.1}}}},
@@ -225,7 +227,8 @@ TEST(Config, UnknownKeyListsTheAllowedKeys) {
   ASSERT_EQ(problems.size(), 1u);
   const auto allowed = problems[0].find("allowed");
   ASSERT_NE(allowed, std::string::npos) << problems[0];
-  for (const char* key : {"E", "nu", "rho"}) EXPECT_NE(problems[0].find(key, allowed), std::string::npos) << problems[0];
+  for (const char* key : {"E", "nu", "rho"})
+    EXPECT_NE(problems[0].find(key, allowed), std::string::npos) << problems[0];
 }
 
 // issue 11 item 3: a step count over time.max_steps (counted in floating point, so that 2^31 and more
@@ -278,7 +281,8 @@ TEST(Config, OverridesAreMergedAndValidated) {
 
 // issue 11 item 7: the run parses the bytes it read once; they stay what the file held at that moment.
 TEST(Config, ConfigBytesAreReadOnceAndVerbatim) {
-  const auto path = std::filesystem::temp_directory_path() / ("slidewave_bytes_" + std::to_string(::getpid()) + ".json");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("slidewave_bytes_" + std::to_string(::getpid()) + ".json");
   const std::string original = "{\"material\": {\"nu\": 0.3}}\n  ";
   std::ofstream(path) << original;
   const std::string bytes = read_config_bytes(path.string());
@@ -315,7 +319,8 @@ TEST(ConfigCli, RunWithBadConfigExits2AndWritesNothing) {
   const TempDir dir("cli_bad");
   const auto config = dir.path / "bad.json", out = dir.path / "out.h5", err = dir.path / "stderr.txt";
   std::ofstream(config) << R"({"material": {"nu": 0.5, "E": -1}, "time": {"hht_alpha": 0.4}, "typo": 1})";
-  const int code = run(std::string(SLIDEWAVE_BIN) + " run " + config.string() + " -o " + out.string() + " 2> " + err.string());
+  const int code =
+      run(std::string(SLIDEWAVE_BIN) + " run " + config.string() + " -o " + out.string() + " 2> " + err.string());
   EXPECT_EQ(code, 2);
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_FALSE(std::filesystem::exists(dir.path / "out.xdmf"));

@@ -1,6 +1,6 @@
 #pragma once
 // Independent oracles for the frictional contact problem  y = q + W r  (node k: y = (du_x, u_y),
-// r = (r_x, r_y)), shared by coulomb_local_test and gauss_seidel_test:
+// r = (r_x, r_y)), shared by coulomb_local_test and contact_solver_test:
 //  - signorini_coulomb_violations: the conditions checked directly on (r, y);
 //  - enumerate_solutions: brute force over the 4^n state combinations (open, stick, slip +, slip -),
 //    one linear system each, keeping every solution that satisfies all conditions.
@@ -78,10 +78,18 @@ inline std::vector<Eigen::VectorXd> enumerate_solutions(const Eigen::MatrixXd& W
     for (int k = 0; k < n && ok; ++k) {
       const double rx = r(2 * k), ry = r(2 * k + 1), dux = y(2 * k), uy = y(2 * k + 1);
       switch (states[k]) {
-        case TrialState::open: ok = uy >= -tol; break;
-        case TrialState::stick: ok = ry >= -tol && std::fabs(rx) <= f * ry + tol; break;
-        case TrialState::slip_forward: ok = ry >= -tol && dux >= -tol; break;
-        case TrialState::slip_backward: ok = ry >= -tol && dux <= tol; break;
+        case TrialState::open:
+          ok = uy >= -tol;
+          break;
+        case TrialState::stick:
+          ok = ry >= -tol && std::fabs(rx) <= f * ry + tol;
+          break;
+        case TrialState::slip_forward:
+          ok = ry >= -tol && dux >= -tol;
+          break;
+        case TrialState::slip_backward:
+          ok = ry >= -tol && dux <= tol;
+          break;
       }
     }
     if (!ok) continue;

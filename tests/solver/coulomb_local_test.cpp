@@ -37,8 +37,8 @@ TEST(CoulombLocal, OpenWhenTheFreeGapIsNonNegative) {
 TEST(CoulombLocal, HandBuiltDiagonalCases) {
   const Eigen::Matrix2d D = diagonal_D();
   expect_solution(solve_local_coulomb(D, {0.1, -0.6}, 0.5), ContactState::stick, {-0.05, 0.2});
-  expect_solution(solve_local_coulomb(D, {0.5, -0.6}, 0.5), ContactState::slip, {-0.1, 0.2});   // du_x = +0.3
-  expect_solution(solve_local_coulomb(D, {-0.5, -0.6}, 0.5), ContactState::slip, {0.1, 0.2});   // du_x = -0.3
+  expect_solution(solve_local_coulomb(D, {0.5, -0.6}, 0.5), ContactState::slip, {-0.1, 0.2});  // du_x = +0.3
+  expect_solution(solve_local_coulomb(D, {-0.5, -0.6}, 0.5), ContactState::slip, {0.1, 0.2});  // du_x = -0.3
   // On the cone edge |r_x| = f r_y exactly: stick (du_x = 0) is the answer.
   expect_solution(solve_local_coulomb(D, {0.2, -0.6}, 0.5), ContactState::stick, {-0.1, 0.2});
   // Frictionless: r_x = 0, pure normal reaction, free tangential motion.
@@ -73,7 +73,8 @@ TEST(CoulombLocal, FixedBound) {
   const double bound = 0.05;
   // stick inside the bound: r = -D^-1 b = -(3 b_x - 0.5 b_y, -0.5 b_x + 2 b_y) / 5.75 for b = (-0.08, -0.6)
   const auto stick = solve_local_coulomb(D, {-0.08, -0.6}, 1.0, bound);
-  expect_solution(stick, ContactState::stick, Eigen::Vector2d(-(3 * -0.08 + 0.5 * 0.6), -(-0.5 * -0.08 - 2 * 0.6)) / 5.75);
+  expect_solution(stick, ContactState::stick,
+                  Eigen::Vector2d(-(3 * -0.08 + 0.5 * 0.6), -(-0.5 * -0.08 - 2 * 0.6)) / 5.75);
   EXPECT_LE(std::fabs(stick.r.x()), bound);
   // slip forward: r_x = -bound, u_y = 0 gives r_y = (0.6 + 0.5 bound) / 3
   expect_solution(solve_local_coulomb(D, {0.5, -0.6}, 1.0, bound), ContactState::slip,

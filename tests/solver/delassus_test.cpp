@@ -11,7 +11,7 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
 #include "test_support.hpp"
-#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 namespace {
@@ -24,14 +24,12 @@ struct Tiny {
 
 /// n_x = 5, n_y = 3: K_eff of the paper's HHT step (dynamic) or the static K_ff.
 Tiny tiny_model(Integration integration, bool dynamic) {
-  RunConfig config = testing::make_config(
-      {{"mesh", {{"elements_per_H", 3}, {"integration", testing::integration_name(integration)}}},
-       {"geometry", {{"lambda_over_H", 5.0 / 3.0}}}});
+  RunConfig config =
+      testing::make_config({{"mesh", {{"elements_per_H", 3}, {"integration", testing::integration_name(integration)}}},
+                            {"geometry", {{"lambda_over_H", 5.0 / 3.0}}}});
   LayerModel model(config);
   const HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-  Eigen::SparseMatrix<double> K_eff =
-      dynamic ? Eigen::SparseMatrix<double>(hht.mass_factor() * model.M_ff + (1 - hht.alpha) * model.K_ff)
-              : model.K_ff;
+  Eigen::SparseMatrix<double> K_eff = dynamic ? effective_matrix(hht, model.M_ff, model.K_ff) : model.K_ff;
   return {config, std::move(model), std::move(K_eff)};
 }
 
@@ -106,9 +104,9 @@ TEST(Delassus, PerNodeBlocksAreDiagonal) {
       EXPECT_LE(max_ratio, 1e-12) << where;
       const double cross_node = std::fabs(W(0, 3)) / std::sqrt(W(0, 0) * W(3, 3));
       EXPECT_GT(cross_node, 1e-6) << where << ": neighbouring nodes couple u_x and u_y";
-      ::testing::Test::RecordProperty("max_offdiag_" + testing::integration_name(integration) +
-                                          (dynamic ? "_dynamic" : "_static"),
-                                      testing::sci(max_ratio));
+      ::testing::Test::RecordProperty(
+          "max_offdiag_" + testing::integration_name(integration) + (dynamic ? "_dynamic" : "_static"),
+          testing::sci(max_ratio));
     }
 }
 

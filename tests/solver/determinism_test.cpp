@@ -38,10 +38,10 @@ TEST(Determinism, TwoRunsAreBitIdentical) {
   EXPECT_TRUE(bit_identical(ia.tangential_traction.data, ib.tangential_traction.data));
   EXPECT_TRUE(bit_identical(ia.state.data, ib.state.data));
   const auto &ga = a.global, &gb = b.global;
-  for (const auto member : {&GlobalSeries::t, &GlobalSeries::T, &GlobalSeries::N, &GlobalSeries::T_over_N,
-                            &GlobalSeries::energy_kinetic, &GlobalSeries::energy_elastic, &GlobalSeries::work_external,
-                            &GlobalSeries::dissipation_friction, &GlobalSeries::work_contact_normal,
-                            &GlobalSeries::energy_balance_residual, &GlobalSeries::contact_residual})
+  for (const auto member :
+       {&GlobalSeries::t, &GlobalSeries::T, &GlobalSeries::N, &GlobalSeries::T_over_N, &GlobalSeries::energy_kinetic,
+        &GlobalSeries::energy_elastic, &GlobalSeries::work_external, &GlobalSeries::dissipation_friction,
+        &GlobalSeries::work_contact_normal, &GlobalSeries::energy_balance_residual, &GlobalSeries::contact_residual})
     EXPECT_TRUE(bit_identical(ga.*member, gb.*member));
   EXPECT_TRUE(bit_identical(ga.contact_iterations, gb.contact_iterations));
   ASSERT_EQ(a.snapshots.size(), 1u);

@@ -90,8 +90,9 @@ TEST(Energy, AllStickRunConservesEnergyWithTrapezoidalRule) {
 // nu = 0.2, f = 1.5 at H/8, past the onset), for both contact weightings (identical when a = 0).
 TEST(Energy, SlidingRunBalancesWithTrapezoidalRule) {
   for (const char* weighting : {"alpha", "end"}) {
-    const Balance b = energy_balance({{"mesh", {{"elements_per_H", 8}}},
-                                      {"time", {{"hht_alpha", 0.0}, {"t_end", 1100.0}, {"contact_weighting", weighting}}}});
+    const Balance b =
+        energy_balance({{"mesh", {{"elements_per_H", 8}}},
+                        {"time", {{"hht_alpha", 0.0}, {"t_end", 1100.0}, {"contact_weighting", weighting}}}});
     ASSERT_TRUE(b.complete);
     EXPECT_GT(b.n_slip_samples, 0);
     EXPECT_GT(b.max_dissipation, 0);
@@ -109,14 +110,13 @@ TEST(Energy, HhtAlphaDissipatesNeverCreates) {
   EXPECT_LT(stick.final_relative, 0.0);
   EXPECT_GT(stick.min_relative, -1e-2) << "dissipation should be small";
   EXPECT_LT(stick.max_relative, 1e-8);
-  const Balance sliding = energy_balance({{"mesh", {{"elements_per_H", 8}}},
-                                          {"time", {{"hht_alpha", 0.1}, {"t_end", 1100.0}}}});
+  const Balance sliding =
+      energy_balance({{"mesh", {{"elements_per_H", 8}}}, {"time", {{"hht_alpha", 0.1}, {"t_end", 1100.0}}}});
   EXPECT_LT(sliding.final_relative, 0.0);
   EXPECT_LT(sliding.max_relative, 1e-8);
   ::testing::Test::RecordProperty("stick_final_relative", testing::sci(stick.final_relative));
   ::testing::Test::RecordProperty("sliding_final_relative", testing::sci(sliding.final_relative));
 }
-
 
 }  // namespace
 }  // namespace slidewave

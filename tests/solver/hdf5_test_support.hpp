@@ -37,12 +37,13 @@ inline const SmallRun& small_run() {
 /// The path (without the leading '/') of every dataset in an open file, in the file's name order.
 inline std::vector<std::string> dataset_names(hid_t file) {
   std::vector<std::string> names;
-  H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE,
-           [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
-             if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(name);
-             return 0;
-           },
-           &names);
+  H5Ovisit(
+      file, H5_INDEX_NAME, H5_ITER_NATIVE,
+      [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+        if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(name);
+        return 0;
+      },
+      &names);
   return names;
 }
 

@@ -44,8 +44,9 @@ double energy_flowed(const GlobalSeries& g) {
 double closure_without(const GlobalSeries& g, const std::vector<double>* dropped, double scale) {
   double worst = 0;
   for (size_t n = 0; n < g.t.size(); ++n)
-    worst = std::max(worst, std::fabs(g.energy_balance_residual[n] + g.dissipation_hht[n] -
-                                      (dropped ? (*dropped)[n] : 0.0)) / scale);
+    worst = std::max(
+        worst,
+        std::fabs(g.energy_balance_residual[n] + g.dissipation_hht[n] - (dropped ? (*dropped)[n] : 0.0)) / scale);
   return worst;
 }
 
@@ -93,10 +94,11 @@ TEST(HhtDissipation, EqualsTheBalanceResidualForBothContactWeightings) {
       EXPECT_GT(closure_without(g, term, o.scale), 1e3 * kClosureTolerance);
     ::testing::Test::RecordProperty(std::string("residual_") + weighting, testing::sci(residual));
     ::testing::Test::RecordProperty(std::string("closure_") + weighting, testing::sci(closure));
-    std::printf("[hht] %s: max |residual| %.3e, closure %.3e of the energy that flowed (%.4e J/m); terms "
-                "gamma %.3e beta %.3e shift %.3e J/m\n",
-                weighting, residual, closure, o.scale, g.dissipation_hht_gamma.back(), g.dissipation_hht_beta.back(),
-                g.dissipation_hht_shift.back());
+    std::printf(
+        "[hht] %s: max |residual| %.3e, closure %.3e of the energy that flowed (%.4e J/m); terms "
+        "gamma %.3e beta %.3e shift %.3e J/m\n",
+        weighting, residual, closure, o.scale, g.dissipation_hht_gamma.back(), g.dissipation_hht_beta.back(),
+        g.dissipation_hht_shift.back());
   }
 }
 

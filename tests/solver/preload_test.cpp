@@ -35,7 +35,8 @@ PreloadErrors preload_errors(double tolerance, int elements_per_H) {
                {"friction", {{"f", f}}},
                {"contact", {{"tolerance", tolerance}, {"max_iterations", 100000}}},
                {"numerics", {{"linear_solver", linear_solver}}},
-               {"mesh", {{"elements_per_H", elements_per_H}, {"integration", testing::integration_name(integration)}}}});
+               {"mesh",
+                {{"elements_per_H", elements_per_H}, {"integration", testing::integration_name(integration)}}}});
           const std::string where = "nu = " + std::to_string(nu) + " f = " + std::to_string(f) + " " +
                                     testing::integration_name(integration) + " " + linear_solver;
           const LayerModel model(config);
@@ -125,7 +126,8 @@ TEST(Preload, DisplacementFieldIsLinearInY) {
 }
 
 TEST(Preload, ZeroPreshearLeavesNoShear) {
-  const RunConfig config = testing::make_config({{"loading", {{"preshear_ratio", 0.0}}}, {"mesh", {{"elements_per_H", 4}}}});
+  const RunConfig config =
+      testing::make_config({{"loading", {{"preshear_ratio", 0.0}}}, {"mesh", {{"elements_per_H", 4}}}});
   const LayerModel model(config);
   const PreloadState pre = solve_preload(model);
   // Zero up to the contact tolerance of stage 1 (the default 1e-10).

@@ -56,9 +56,9 @@ TEST(Quad4, ThreeRigidBodyModesHaveZeroForce) {
       Eigen::Matrix<double, 8, 3> modes = Eigen::Matrix<double, 8, 3>::Zero();
       for (int n = 0; n < 4; ++n) {
         const double x = (1 + kXi[n]) * h / 2, y = (1 + kEta[n]) * h / 2;
-        modes(2 * n, 0) = 1;       // translation x
-        modes(2 * n + 1, 1) = 1;   // translation y
-        modes(2 * n, 2) = -y;      // rotation about the origin (not the centre, on purpose)
+        modes(2 * n, 0) = 1;      // translation x
+        modes(2 * n + 1, 1) = 1;  // translation y
+        modes(2 * n, 2) = -y;     // rotation about the origin (not the centre, on purpose)
         modes(2 * n + 1, 2) = x;
       }
       for (int m = 0; m < 3; ++m)
@@ -70,8 +70,10 @@ TEST(Quad4, ThreeRigidBodyModesHaveZeroForce) {
 // Eigenvalues of K_e: 3 zeros (rigid body) for full and stabilized reduced, 5 for pure 1-point
 // (the two hourglass modes u_x = xi eta, u_y = xi eta), and those two are the extra null vectors.
 TEST(Quad4, ZeroEnergyModeCount) {
-  const struct { Integration integration; int n_zero; } cases[] = {
-      {Integration::full, 3}, {Integration::reduced, 3}, {Integration::reduced_pure, 5}};
+  const struct {
+    Integration integration;
+    int n_zero;
+  } cases[] = {{Integration::full, 3}, {Integration::reduced, 3}, {Integration::reduced_pure, 5}};
   for (const auto& c : cases)
     for (double nu : {0.0, 0.3, 0.49}) {
       const Matrix8 K = quad4_stiffness(1000.0, nu, 1.3, c.integration);

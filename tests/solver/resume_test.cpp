@@ -54,10 +54,10 @@ void expect_concatenation(const RunRecord& whole, const RunRecord& first, const 
   };
   const auto& g = whole.global;
   using G = std::vector<double> GlobalSeries::*;
-  for (G field : {&GlobalSeries::t, &GlobalSeries::T, &GlobalSeries::N, &GlobalSeries::T_over_N,
-                  &GlobalSeries::energy_kinetic, &GlobalSeries::energy_elastic, &GlobalSeries::work_external,
-                  &GlobalSeries::dissipation_friction, &GlobalSeries::work_contact_normal,
-                  &GlobalSeries::energy_balance_residual, &GlobalSeries::contact_residual})
+  for (G field :
+       {&GlobalSeries::t, &GlobalSeries::T, &GlobalSeries::N, &GlobalSeries::T_over_N, &GlobalSeries::energy_kinetic,
+        &GlobalSeries::energy_elastic, &GlobalSeries::work_external, &GlobalSeries::dissipation_friction,
+        &GlobalSeries::work_contact_normal, &GlobalSeries::energy_balance_residual, &GlobalSeries::contact_residual})
     EXPECT_TRUE(same_bits(g.*field, joined(first.global.*field, rest.global.*field)));
   EXPECT_EQ(g.contact_iterations, joined(first.global.contact_iterations, rest.global.contact_iterations));
   const auto& s = whole.interface;
@@ -109,20 +109,22 @@ TEST(Resume, CoulombWithSnapshotsOnBothSides) {
 
 // A deformable substrate (docs/substrate.md): the checkpoint carries its dynamics and its ledger too.
 TEST(Resume, WithASubstrateCarriesBothBodies) {
-  check_resume({{"mesh", {{"elements_per_H", 8}}},
-                {"friction", {{"f", 0.3}}},
-                {"loading", {{"V0_over_cs", 1e-3}}},
-                {"substrate", {{"E", 3e3}, {"nu", 0.3}, {"rho", 2e3}, {"H", 12.5}}},
-                {"time", {{"t_end", 200.0}}},
-                {"output", {{"interface_stride", 3}, {"snapshot_times", {0, 50, 150}}, {"energy_decomposition", "hht"}}}},
-               100);
+  check_resume(
+      {{"mesh", {{"elements_per_H", 8}}},
+       {"friction", {{"f", 0.3}}},
+       {"loading", {{"V0_over_cs", 1e-3}}},
+       {"substrate", {{"E", 3e3}, {"nu", 0.3}, {"rho", 2e3}, {"H", 12.5}}},
+       {"time", {{"t_end", 200.0}}},
+       {"output", {{"interface_stride", 3}, {"snapshot_times", {0, 50, 150}}, {"energy_decomposition", "hht"}}}},
+      100);
 }
 
 /// First step at which a contact node slips (from the interface rows, stride 1).
 std::int64_t first_slip_step(const RunRecord& rec) {
   const auto& state = rec.interface.state;
   for (std::size_t i = 0; i < state.data.size(); ++i)
-    if (state.data[i] == static_cast<std::int8_t>(ContactState::slip)) return static_cast<std::int64_t>(i / state.n_cols);
+    if (state.data[i] == static_cast<std::int8_t>(ContactState::slip))
+      return static_cast<std::int64_t>(i / state.n_cols);
   return -1;
 }
 

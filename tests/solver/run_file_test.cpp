@@ -13,11 +13,11 @@
 #include <sstream>
 
 #include "git_version.hpp"
+#include "hdf5_test_support.hpp"
 #include "io/run_file.hpp"
 #include "io/xdmf.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
-#include "hdf5_test_support.hpp"
 
 namespace slidewave {
 namespace {
@@ -62,12 +62,13 @@ T read_number_attribute(hid_t object, const char* name) {
 std::vector<std::string> attribute_names(hid_t object) {
   std::vector<std::string> names;
   hsize_t index = 0;
-  H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, &index,
-              [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
-                static_cast<std::vector<std::string>*>(out)->push_back(name);
-                return 0;
-              },
-              &names);
+  H5Aiterate2(
+      object, H5_INDEX_NAME, H5_ITER_INC, &index,
+      [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
+        static_cast<std::vector<std::string>*>(out)->push_back(name);
+        return 0;
+      },
+      &names);
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -111,7 +112,8 @@ TEST(RunFile, RoundTripWithProvenance) {
   const std::string path = (dir.path / "run.h5").string();
   const Provenance provenance{"slidewave run config.json -o run.h5", kSmallRunInput};
   ASSERT_NO_THROW(write_run_file(path, config, rec, provenance));
-  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.h5", "run.interface.xdmf", "run.xdmf"})) << "no temporary left";
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.h5", "run.interface.xdmf", "run.xdmf"}))
+      << "no temporary left";
 
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -124,8 +126,8 @@ TEST(RunFile, RoundTripWithProvenance) {
   EXPECT_EQ(commit, kGitCommit);
   EXPECT_TRUE(std::regex_match(commit, std::regex("([0-9a-f]{12}(-dirty)?)|unknown"))) << commit;
   EXPECT_EQ(read_string_attribute(file, "call"), provenance.call);
-  EXPECT_TRUE(std::regex_match(read_string_attribute(file, "created_utc"),
-                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_TRUE(
+      std::regex_match(read_string_attribute(file, "created_utc"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
   const auto resolved = nlohmann::json::parse(read_string_attribute(file, "config"));
   EXPECT_EQ(resolved, config.to_json());
   EXPECT_EQ(parse_run_config(resolved).to_json(), config.to_json()) << "the resolved config reruns the run";
@@ -138,12 +140,26 @@ TEST(RunFile, RoundTripWithProvenance) {
   ASSERT_GE(setup, 0);
   EXPECT_EQ(read_string_attribute(setup, "config_input"), kSmallRunInput) << "verbatim input";
   const DerivedConstants d = config.derived();
-  const struct { const char* name; double value; } numbers[] = {
-      {"E", config.material.E}, {"nu", config.material.nu}, {"rho", config.material.rho}, {"H", d.H},
-      {"lambda", d.lambda}, {"h", d.h}, {"f", config.friction.f}, {"c_s", d.c_s}, {"c_l", d.c_l}, {"p0", d.p0},
-      {"V0", d.V0}, {"dt", d.dt}, {"t_end", config.time.t_end}, {"hht_alpha", config.time.hht_alpha},
-      {"t_onset_estimate", d.t_onset_estimate}, {"u_x_preshear", rec.u_x_preshear},
-      {"opening_threshold", opening_threshold(config)}};
+  const struct {
+    const char* name;
+    double value;
+  } numbers[] = {{"E", config.material.E},
+                 {"nu", config.material.nu},
+                 {"rho", config.material.rho},
+                 {"H", d.H},
+                 {"lambda", d.lambda},
+                 {"h", d.h},
+                 {"f", config.friction.f},
+                 {"c_s", d.c_s},
+                 {"c_l", d.c_l},
+                 {"p0", d.p0},
+                 {"V0", d.V0},
+                 {"dt", d.dt},
+                 {"t_end", config.time.t_end},
+                 {"hht_alpha", config.time.hht_alpha},
+                 {"t_onset_estimate", d.t_onset_estimate},
+                 {"u_x_preshear", rec.u_x_preshear},
+                 {"opening_threshold", opening_threshold(config)}};
   std::vector<std::string> setup_names{"config_input"};
   for (const auto& n : numbers) {
     EXPECT_EQ(read_number_attribute<double>(setup, n.name), n.value) << n.name;
@@ -151,9 +167,9 @@ TEST(RunFile, RoundTripWithProvenance) {
   }
   std::sort(setup_names.begin(), setup_names.end());
   EXPECT_EQ(attribute_names(setup), setup_names);
-  const std::vector<std::string> root_names{"call", "complete", "config", "created_utc", "creator", "end_reason",
-                                            "format_version", "git_commit", "n_steps_done", "run_id",
-                                            "slidewave_version", "t_first_opening"};
+  const std::vector<std::string> root_names{
+      "call",           "complete",   "config",       "created_utc", "creator",           "end_reason",
+      "format_version", "git_commit", "n_steps_done", "run_id",      "slidewave_version", "t_first_opening"};
   EXPECT_EQ(attribute_names(file), root_names) << "the root keeps provenance and outcome only";
   EXPECT_EQ(rec.opening_threshold, opening_threshold(config)) << "the threshold the loop used";
   EXPECT_EQ(read_number_attribute<double>(setup, "opening_threshold"), 1e-2 * 0.001 * 25.0);
@@ -166,8 +182,10 @@ TEST(RunFile, RoundTripWithProvenance) {
   EXPECT_EQ(dataset_shape(file, "/interface/x"), std::vector<hsize_t>{n_c});
   EXPECT_EQ(dataset_shape(file, "/interface/t"), std::vector<hsize_t>{n_out});
   const std::pair<const char*, const Series2D<double>*> interface_fields[] = {
-      {"slip_velocity", &rec.interface.slip_velocity}, {"slip", &rec.interface.slip},
-      {"opening", &rec.interface.opening}, {"normal_traction", &rec.interface.normal_traction},
+      {"slip_velocity", &rec.interface.slip_velocity},
+      {"slip", &rec.interface.slip},
+      {"opening", &rec.interface.opening},
+      {"normal_traction", &rec.interface.normal_traction},
       {"tangential_traction", &rec.interface.tangential_traction}};
   for (const auto& [name, series] : interface_fields) {
     const std::string p = std::string("/interface/") + name;
@@ -182,9 +200,14 @@ TEST(RunFile, RoundTripWithProvenance) {
   const hsize_t n_steps = rec.global.t.size();
   EXPECT_EQ(n_steps, static_cast<hsize_t>(rec.n_steps_done + 1));
   const std::pair<const char*, const std::vector<double>*> global_fields[] = {
-      {"t", &rec.global.t}, {"T", &rec.global.T}, {"N", &rec.global.N}, {"T_over_N", &rec.global.T_over_N},
-      {"energy_kinetic", &rec.global.energy_kinetic}, {"energy_elastic", &rec.global.energy_elastic},
-      {"work_external", &rec.global.work_external}, {"dissipation_friction", &rec.global.dissipation_friction},
+      {"t", &rec.global.t},
+      {"T", &rec.global.T},
+      {"N", &rec.global.N},
+      {"T_over_N", &rec.global.T_over_N},
+      {"energy_kinetic", &rec.global.energy_kinetic},
+      {"energy_elastic", &rec.global.energy_elastic},
+      {"work_external", &rec.global.work_external},
+      {"dissipation_friction", &rec.global.dissipation_friction},
       {"work_contact_normal", &rec.global.work_contact_normal},
       {"energy_balance_residual", &rec.global.energy_balance_residual},
       {"contact_residual", &rec.global.contact_residual}};
@@ -218,7 +241,8 @@ TEST(RunFile, RoundTripWithProvenance) {
   const std::vector<std::string> datasets = dataset_names(file);
   EXPECT_GE(datasets.size(), 8u + 12u + 2u + 4u);
   for (const auto& p : datasets) {
-    const std::string unit = dataset_attribute(file, p, "unit"), description = dataset_attribute(file, p, "description");
+    const std::string unit = dataset_attribute(file, p, "unit"),
+                      description = dataset_attribute(file, p, "description");
     EXPECT_FALSE(unit.empty() || unit[0] == '<') << p << " unit: " << unit;
     EXPECT_FALSE(description.empty() || description[0] == '<') << p << " description: " << description;
   }

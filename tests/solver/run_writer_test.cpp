@@ -13,8 +13,8 @@
 #include "hdf5_test_support.hpp"
 #include "io/hdf5_support.hpp"
 #include "io/run_file.hpp"
-#include "io/xdmf.hpp"
 #include "io/run_writer.hpp"
+#include "io/xdmf.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 
@@ -85,7 +85,8 @@ TEST(RunWriter, DrainedInBlocksEqualsWholeFile) {
   ASSERT_GT(n_g, 40u);
   RunWriter writer(dir / "streamed.partial.h5", config, provenance);
   // Uneven blocks, a block without interface rows, snapshots in separate drains.
-  const size_t g_cuts[] = {0, 1, 2, 17, 18, 40, n_g}, i_cuts[] = {0, 1, 1, 6, 6, 14, n_i}, s_cuts[] = {0, 1, 1, 1, 2, 2, 2};
+  const size_t g_cuts[] = {0, 1, 2, 17, 18, 40, n_g}, i_cuts[] = {0, 1, 1, 6, 6, 14, n_i},
+               s_cuts[] = {0, 1, 1, 1, 2, 2, 2};
   for (int b = 0; b + 1 < 7; ++b) {
     RunRecord block = rows_of(rec, g_cuts[b], g_cuts[b + 1], i_cuts[b], i_cuts[b + 1], s_cuts[b], s_cuts[b + 1]);
     writer.drain(block);

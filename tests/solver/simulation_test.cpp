@@ -49,8 +49,8 @@ TEST(Simulation, RunsToTEnd) {
 }
 
 TEST(Simulation, StopAfterOpening) {
-  const RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", 16}}},
-                                                 {"time", {{"t_end", 3000.0}, {"stop_after_opening", 50.0}}}});
+  const RunConfig config = testing::make_config(
+      {{"mesh", {{"elements_per_H", 16}}}, {"time", {{"t_end", 3000.0}, {"stop_after_opening", 50.0}}}});
   const RunRecord rec = simulate(LayerModel(config));
   const double dt = config.derived().dt;
   ASSERT_GT(rec.t_first_opening, 0) << "nu = 0.2, f = 1.5 opens (see Smoke.*)";
@@ -66,9 +66,8 @@ TEST(Simulation, StopAfterOpening) {
 // the preload and fails the first dynamic step that needs more sweeps: the run stops incomplete with
 // end_reason contact_not_converged, keeping what it computed so far.
 TEST(Simulation, ContactNotConvergedEndsTheRunIncomplete) {
-  const RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", 8}}},
-                                                 {"contact", {{"max_iterations", 2}}},
-                                                 {"time", {{"t_end", 3000.0}}}});
+  const RunConfig config = testing::make_config(
+      {{"mesh", {{"elements_per_H", 8}}}, {"contact", {{"max_iterations", 2}}}, {"time", {{"t_end", 3000.0}}}});
   const RunRecord rec = simulate(LayerModel(config));
   EXPECT_FALSE(rec.complete);
   EXPECT_EQ(rec.end_reason, "contact_not_converged");
@@ -93,8 +92,8 @@ TEST(SimulationCli, ContactFailureExits1AndKeepsTheIncompleteRun) {
   std::filesystem::create_directories(dir);
   const auto config = dir / "run.json", out = dir / "run.h5", err = dir / "stderr.txt";
   std::ofstream(config) << R"({"mesh": {"elements_per_H": 8}, "contact": {"max_iterations": 2}})";
-  const int status = std::system((std::string(SLIDEWAVE_BIN) + " run " + config.string() + " -o " + out.string() +
-                                  " 2> " + err.string()).c_str());
+  const int status = std::system(
+      (std::string(SLIDEWAVE_BIN) + " run " + config.string() + " -o " + out.string() + " 2> " + err.string()).c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1);
   EXPECT_TRUE(std::filesystem::exists(out));

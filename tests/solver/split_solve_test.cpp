@@ -33,15 +33,14 @@ double relative_difference(const Eigen::VectorXd& x, const Eigen::VectorXd& refe
 }
 
 LayerModel layer(int n_x, int n_y, Integration integration, const char* mass) {
-  return LayerModel(testing::make_config({{"mesh", {{"elements_per_H", n_y},
-                                                    {"integration", testing::integration_name(integration)},
-                                                    {"mass", mass}}},
-                                          {"geometry", {{"lambda_over_H", double(n_x) / n_y}}}}));
+  return LayerModel(testing::make_config(
+      {{"mesh", {{"elements_per_H", n_y}, {"integration", testing::integration_name(integration)}, {"mass", mass}}},
+       {"geometry", {{"lambda_over_H", double(n_x) / n_y}}}}));
 }
 
 Eigen::SparseMatrix<double> K_eff_of(const LayerModel& m) {
   const HHTCoefficients hht(m.config.time.hht_alpha, m.d.dt);
-  return hht.mass_factor() * m.M_ff + (1 - hht.alpha) * m.K_ff;
+  return effective_matrix(hht, m.M_ff, m.K_ff);
 }
 
 TEST(SplitSolve, FreeAndLoadedHalvesMatchCholmod) {
@@ -94,8 +93,8 @@ struct OneStep {
   PreloadState pre;
   explicit OneStep(const LayerModel& model)
       : m(model),
-        system{model.K, model.K_ff, model.M_ff, model.M_ff_rows, model.K_fd, model.n_free, model.n_top,
-               model.n_contact_dofs},
+        system{model.K,    model.K_ff,   model.M_ff,  model.M_ff_rows,
+               model.K_fd, model.n_free, model.n_top, model.n_contact_dofs},
         hht(model.config.time.hht_alpha, model.d.dt),
         pre(solve_preload(model)) {}
 
@@ -138,7 +137,8 @@ TEST(SplitSolve, OneStepEqualsTheTwoSolveStep) {
     };
     const HHTState two = step.run(two_solves(circulant()), alpha_weighted, &free_two);
     const HHTState one = step.run(circulant(), alpha_weighted, &free_one);
-    const HHTState cholmod = step.run(two_solves(std::make_unique<SparseCholesky>(K_eff_of(m))), alpha_weighted, &free_cholmod);
+    const HHTState cholmod =
+        step.run(two_solves(std::make_unique<SparseCholesky>(K_eff_of(m))), alpha_weighted, &free_cholmod);
     // The test can fail: contact forces off by the 10 % of a wrong weight w (0.9 for 1) move u far beyond it.
     Eigen::VectorXd unused;
     const HHTState off = step.run(circulant(), alpha_weighted, &unused, 0.9);
@@ -169,7 +169,8 @@ TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
       Eigen::VectorXd free_apart, free_fused;
       const HHTState apart = step.run(solver(), alpha_weighted, &free_apart, 1, false);
       const HHTState fused = step.run(solver(), alpha_weighted, &free_fused, 1, true);
-      const std::string where = std::string(one_pass ? "one pass" : "two solves") + (alpha_weighted ? ", alpha" : ", end");
+      const std::string where =
+          std::string(one_pass ? "one pass" : "two solves") + (alpha_weighted ? ", alpha" : ", end");
       EXPECT_EQ(fused.u, apart.u) << where;
       EXPECT_EQ(fused.v, apart.v) << where;
       EXPECT_EQ(fused.acc, apart.acc) << where;
@@ -190,9 +191,9 @@ TEST(SplitSolve, StepperNeedsASplitSolverOnTheContactDofs) {
   EXPECT_THROW(HHTStepper(system, hht, true, nullptr), std::invalid_argument);
   PartitionedSystem wrong_contact = system;
   wrong_contact.n_contact = 2;
-  EXPECT_THROW(HHTStepper(wrong_contact, hht, true,
-                          std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y)),
-               std::invalid_argument);
+  EXPECT_THROW(
+      HHTStepper(wrong_contact, hht, true, std::make_unique<BlockCirculantSolver>(K_eff_of(m), m.mesh.n_x, m.mesh.n_y)),
+      std::invalid_argument);
   EXPECT_THROW(TwoSolveSplit(std::make_unique<SparseCholesky>(K_eff_of(m)), -1), std::invalid_argument);
 }
 

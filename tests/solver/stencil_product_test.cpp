@@ -68,8 +68,8 @@ void expect_bitwise_equal_to_eigen(const RowMatrix& K, int n_x, const std::strin
     ASSERT_EQ(Ku.size(), expected.size()) << where;
     const int k = first_bitwise_difference(Ku, expected);
     EXPECT_EQ(std::memcmp(Ku.data(), expected.data(), sizeof(double) * Ku.size()), 0)
-        << where << " seed " << seed << ": first difference in row " << k << ": "
-        << exact(k >= 0 ? Ku(k) : 0) << " vs Eigen " << exact(k >= 0 ? expected(k) : 0);
+        << where << " seed " << seed << ": first difference in row " << k << ": " << exact(k >= 0 ? Ku(k) : 0)
+        << " vs Eigen " << exact(k >= 0 ? expected(k) : 0);
   }
 }
 
@@ -134,8 +134,7 @@ TEST(StencilProduct, RefusesAStiffnessThatIsNotAPeriodicStencil) {
   RowMatrix changed = K;
   double& value = changed.coeffRef(row, row);
   value = std::nextafter(value, 2 * value);
-  EXPECT_NE(refusal(changed, n_x).find("row " + std::to_string(row) + " (node i = 5, j = 2, d = 1)"),
-            std::string::npos)
+  EXPECT_NE(refusal(changed, n_x).find("row " + std::to_string(row) + " (node i = 5, j = 2, d = 1)"), std::string::npos)
       << refusal(changed, n_x);
 
   // One entry more (an explicit zero, which Eigen's product also visits), in the template row of node 1.

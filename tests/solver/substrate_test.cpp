@@ -61,7 +61,8 @@ TEST(Substrate, ElementMatricesAreInvariantUnderTheReflection) {
 
 // The substrate body: the layer's n_x and h, H_s / h rows, its own material, the layer's time step.
 TEST(Substrate, BodyIsTheMirroredLayerOfItsMaterial) {
-  const RunConfig c = testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"substrate", substrate(3e3, 0.3, 2e3, 12.5)}});
+  const RunConfig c =
+      testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"substrate", substrate(3e3, 0.3, 2e3, 12.5)}});
   const LayerModel m(c);
   ASSERT_TRUE(m.substrate);
   const LayerModel& s = *m.substrate;
@@ -77,7 +78,8 @@ TEST(Substrate, BodyIsTheMirroredLayerOfItsMaterial) {
 // Preload with a substrate: still all-closed, all-stick, T/N = 0.95 f; zero gap; identical bodies share
 // the compression exactly.
 TEST(Substrate, PreloadOfThePairSticksAtThePreshearRatio) {
-  const RunConfig c = testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"substrate", substrate(1e3, 0.2, 1e3, 25.0)}});
+  const RunConfig c =
+      testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"substrate", substrate(1e3, 0.2, 1e3, 25.0)}});
   const LayerModel m(c);
   const PreloadState pre = solve_preload(m);
   EXPECT_NEAR(pre.T / pre.N, 0.95 * c.friction.f, 1e-9);
@@ -94,7 +96,7 @@ TEST(Substrate, PreloadOfThePairSticksAtThePreshearRatio) {
 }
 
 struct StiffComparison {
-  double max_dT_over_N;     ///< max |T/N (substrate) - T/N (rigid)| over the steps before the first slip
+  double max_dT_over_N;  ///< max |T/N (substrate) - T/N (rigid)| over the steps before the first slip
   long first_slip_rigid, first_slip_substrate;  ///< step of the first slipping node (-1: none)
   double T_over_N_at_onset;
 };
@@ -131,15 +133,16 @@ TEST(Substrate, StiffSubstrateReproducesTheRigidFlat) {
   r.T_over_N_at_onset = rigid.global.T_over_N[r.first_slip_rigid - 1];
   RecordProperty("max_dT_over_N", testing::sci(r.max_dT_over_N));
   RecordProperty("first_slip_step", std::to_string(r.first_slip_rigid));
-  std::printf("stiff substrate: max |d(T/N)| before onset %.3e, first slip at step %ld (rigid) and %ld (pair), "
-              "T/N before onset %.6f\n",
-              r.max_dT_over_N, r.first_slip_rigid, r.first_slip_substrate, r.T_over_N_at_onset);
+  std::printf(
+      "stiff substrate: max |d(T/N)| before onset %.3e, first slip at step %ld (rigid) and %ld (pair), "
+      "T/N before onset %.6f\n",
+      r.max_dT_over_N, r.first_slip_rigid, r.first_slip_substrate, r.T_over_N_at_onset);
   EXPECT_LT(r.max_dT_over_N, 1e-3);
   EXPECT_EQ(r.first_slip_substrate, r.first_slip_rigid);
 }
 
 struct PairBalance {
-  double max_abs_relative;  ///< max |residual| / max (E_kin + E_el)
+  double max_abs_relative;      ///< max |residual| / max (E_kin + E_el)
   double max_abs_hht_relative;  ///< max |residual + D_hht| / max (E_kin + E_el) (with the decomposition)
   int n_slip_samples;
   bool complete;

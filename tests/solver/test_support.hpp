@@ -1,7 +1,7 @@
 #pragma once
 // Small helpers shared by the test files (no assertions here: each test states its own oracle).
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -18,9 +18,12 @@ inline const Integration kAllIntegrations[] = {Integration::full, Integration::r
 
 inline std::string integration_name(Integration i) {
   switch (i) {
-    case Integration::full: return "full";
-    case Integration::reduced: return "reduced";
-    case Integration::reduced_pure: return "reduced_pure";
+    case Integration::full:
+      return "full";
+    case Integration::reduced:
+      return "reduced";
+    case Integration::reduced_pure:
+      return "reduced_pure";
   }
   return "?";
 }

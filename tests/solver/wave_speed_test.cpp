@@ -17,9 +17,9 @@ namespace slidewave {
 namespace {
 
 struct ColumnSpeeds {
-  double c_s, c_l;              // measured
-  double coupling;              // |x-y block| / |x-x block| of the projected stiffness
-  double invariance_residual;   // |K_ff P phi - omega^2 M_ff P phi| / |K_ff P phi|, shear mode
+  double c_s, c_l;             // measured
+  double coupling;             // |x-y block| / |x-x block| of the projected stiffness
+  double invariance_residual;  // |K_ff P phi - omega^2 M_ff P phi| / |K_ff P phi|, shear mode
 };
 
 ColumnSpeeds measure_column_speeds(const RunConfig& config) {
@@ -59,11 +59,10 @@ ColumnSpeeds measure_column_speeds(const RunConfig& config) {
 
 RunConfig column_config(double nu, int n, Integration integration, const char* mass) {
   // lambda_over_H * n = 4 columns of elements: the x extent does not matter for x-uniform motion.
-  return testing::make_config({{"material", {{"nu", nu}}},
-                               {"geometry", {{"lambda_over_H", 4.0 / n}}},
-                               {"mesh", {{"elements_per_H", n},
-                                         {"integration", testing::integration_name(integration)},
-                                         {"mass", mass}}}});
+  return testing::make_config(
+      {{"material", {{"nu", nu}}},
+       {"geometry", {{"lambda_over_H", 4.0 / n}}},
+       {"mesh", {{"elements_per_H", n}, {"integration", testing::integration_name(integration)}, {"mass", mass}}}});
 }
 
 TEST(WaveSpeed, ShearAndCompressionWithinOnePercentAtH16) {
@@ -80,8 +79,8 @@ TEST(WaveSpeed, ShearAndCompressionWithinOnePercentAtH16) {
         EXPECT_NEAR(d.c_l, c_l, 1e-14 * c_l);
 
         const ColumnSpeeds measured = measure_column_speeds(config);
-        const std::string where = "nu = " + std::to_string(nu) + " " +
-                                  testing::integration_name(integration) + " " + mass;
+        const std::string where =
+            "nu = " + std::to_string(nu) + " " + testing::integration_name(integration) + " " + mass;
         EXPECT_LT(std::fabs(measured.c_s / c_s - 1), 0.01) << where << ": c_s measured " << measured.c_s;
         EXPECT_LT(std::fabs(measured.c_l / c_l - 1), 0.01) << where << ": c_l measured " << measured.c_l;
         EXPECT_LE(measured.coupling, 1e-14) << where;

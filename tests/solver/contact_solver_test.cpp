@@ -1,12 +1,14 @@
-// Nonsmooth Gauss–Seidel on the condensed problem (contact/gauss_seidel) against brute-force
+// Nonsmooth Gauss–Seidel on the condensed problem (contact/contact_solver) against brute-force
 // enumeration of the 4^n contact states on small random problems, and against the conditions.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <random>
 
+#include "contact/contact_solver.hpp"
+#include "contact/coulomb_friction.hpp"
 #include "contact/delassus.hpp"
-#include "contact/gauss_seidel.hpp"
+#include "contact/prakash_clifton.hpp"
 #include "contact_oracle.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
@@ -14,6 +16,17 @@
 
 namespace slidewave {
 namespace {
+
+/// Gauss–Seidel on a dense W under Coulomb's bound f r_y, and y = q + W r.
+GaussSeidelReport solve_coulomb(const Eigen::MatrixXd& W, const Eigen::VectorXd& q, double f,
+                                const GaussSeidelSettings& settings, Eigen::VectorXd& r, Eigen::VectorXd& y,
+                                std::vector<ContactState>& state) {
+  const ContactSolver solver(W, settings, DelassusLayout::dense);
+  CoulombBounds bounds(f);
+  const GaussSeidelReport report = solver.solve(q, bounds, r, state);
+  solver.local_variables(q, r, y);
+  return report;
+}
 
 /// Random SPD W of 2n x 2n: A A^T / (2n) + 0.3 I, A uniform in [-1, 1] (coupled, including u_x-u_y
 /// within a node). With `delassus_like`, the per-node blocks are diagonal as in the layer's W.
@@ -55,7 +68,7 @@ Counts run_random_problems(bool delassus_like, std::uint64_t seed, int n_trials)
 
         Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * n), y;
         std::vector<ContactState> state;
-        const auto report = solve_contact_gauss_seidel(W, q, f, {}, settings, r, &y, state);
+        const auto report = solve_coulomb(W, q, f, settings, r, y, state);
         if (!report.converged) {
           ++counts.not_converged;
           continue;
@@ -71,9 +84,15 @@ Counts run_random_problems(bool delassus_like, std::uint64_t seed, int n_trials)
           counts.n_stick += state[k] == ContactState::stick;
           counts.n_slip += state[k] == ContactState::slip;
           switch (state[k]) {
-            case ContactState::open: EXPECT_EQ(r.segment<2>(2 * k).norm(), 0.0) << where; break;
-            case ContactState::stick: EXPECT_LE(y.segment<2>(2 * k).norm(), 1e-10) << where; break;
-            case ContactState::slip: EXPECT_NEAR(std::fabs(r(2 * k)), f * r(2 * k + 1), 1e-10) << where; break;
+            case ContactState::open:
+              EXPECT_EQ(r.segment<2>(2 * k).norm(), 0.0) << where;
+              break;
+            case ContactState::stick:
+              EXPECT_LE(y.segment<2>(2 * k).norm(), 1e-10) << where;
+              break;
+            case ContactState::slip:
+              EXPECT_NEAR(std::fabs(r(2 * k)), f * r(2 * k + 1), 1e-10) << where;
+              break;
           }
         }
       }
@@ -90,8 +109,8 @@ TEST(GaussSeidel, AgreesWithBruteForceOnDelassusLikeProblems) {
   ::testing::Test::RecordProperty("problems", c.problems);
   ::testing::Test::RecordProperty("several_solutions", c.several_solutions);
   ::testing::Test::RecordProperty("max_sweeps", c.max_iterations);
-  ::testing::Test::RecordProperty("states_open_stick_slip",
-                                  std::to_string(c.n_open) + " " + std::to_string(c.n_stick) + " " + std::to_string(c.n_slip));
+  ::testing::Test::RecordProperty("states_open_stick_slip", std::to_string(c.n_open) + " " + std::to_string(c.n_stick) +
+                                                                " " + std::to_string(c.n_slip));
 }
 
 // Fully coupled random W (u_x-u_y coupling inside a node too). Projected Gauss–Seidel is not
@@ -114,8 +133,8 @@ TEST(GaussSeidel, WarmStartAtTheSolutionTakesOneSweep) {
   const GaussSeidelSettings settings{1e-14, 10000, 1.0};
   Eigen::VectorXd r = Eigen::VectorXd::Zero(6), y;
   std::vector<ContactState> state;
-  ASSERT_TRUE(solve_contact_gauss_seidel(W, q, 0.5, {}, settings, r, &y, state).converged);
-  const auto again = solve_contact_gauss_seidel(W, q, 0.5, {}, settings, r, &y, state);
+  ASSERT_TRUE(solve_coulomb(W, q, 0.5, settings, r, y, state).converged);
+  const auto again = solve_coulomb(W, q, 0.5, settings, r, y, state);
   EXPECT_TRUE(again.converged);
   EXPECT_EQ(again.iterations, 1);
 }
@@ -127,7 +146,7 @@ TEST(GaussSeidel, ReportsNonConvergenceAtTheIterationCap) {
   const GaussSeidelSettings settings{1e-300, 3, 1.0};
   Eigen::VectorXd r = Eigen::VectorXd::Zero(6), y;
   std::vector<ContactState> state;
-  const auto report = solve_contact_gauss_seidel(W, q, 1.0, {}, settings, r, &y, state);
+  const auto report = solve_coulomb(W, q, 1.0, settings, r, y, state);
   EXPECT_FALSE(report.converged);
   EXPECT_EQ(report.iterations, 2 * 3);  // the plain pass, then the under-relaxed one
   EXPECT_EQ(report.relaxation, kFallbackRelaxation);
@@ -140,10 +159,7 @@ TEST(GaussSeidel, ReportsNonConvergenceAtTheIterationCap) {
 // (the old behaviour: not converged at any cap). The under-relaxed pass converges to the solution.
 TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
   Eigen::MatrixXd W(4, 4);
-  W << 0.41, 0.00, 0.08, 0.15,
-       0.00, 0.62, 0.35, 0.14,
-       0.08, 0.35, 0.53, 0.00,
-       0.15, 0.14, 0.00, 0.33;
+  W << 0.41, 0.00, 0.08, 0.15, 0.00, 0.62, 0.35, 0.14, 0.08, 0.35, 0.53, 0.00, 0.15, 0.14, 0.00, 0.33;
   const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.68, -0.10, 0.69, -0.24).finished();
   const double f = 2.0;
   const auto solutions = testing::enumerate_solutions(W, q, f, 1e-12);
@@ -158,8 +174,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
     }
     return r;
   };
-  const Eigen::VectorXd r_1 = plain_sweep(Eigen::VectorXd::Zero(4)), r_2 = plain_sweep(r_1),
-                        r_3 = plain_sweep(r_2);
+  const Eigen::VectorXd r_1 = plain_sweep(Eigen::VectorXd::Zero(4)), r_2 = plain_sweep(r_1), r_3 = plain_sweep(r_2);
   EXPECT_GT((r_2 - r_1).cwiseAbs().maxCoeff(), 1.0);
   EXPECT_LE((r_3 - r_1).cwiseAbs().maxCoeff(), 1e-14);
   EXPECT_GT((r_1 - solutions[0]).cwiseAbs().maxCoeff(), 0.4);
@@ -167,7 +182,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(4), y;
   std::vector<ContactState> state;
   const GaussSeidelSettings settings{1e-14, 2000, 1.0};
-  const auto report = solve_contact_gauss_seidel(W, q, f, {}, settings, r, &y, state);
+  const auto report = solve_coulomb(W, q, f, settings, r, y, state);
   ASSERT_TRUE(report.converged);
   EXPECT_EQ(report.relaxation, kFallbackRelaxation);
   // The orbit is detected after kCycleSweeps returns (not at the cap), then the relaxed pass converges.
@@ -185,10 +200,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
 // After kMaxStatusChanges changes node 0 gets the Coulomb bound f r_y and the solve converges.
 TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
   Eigen::MatrixXd W(4, 4);
-  W << 1.09, 0.00, -0.24, -0.32,
-       0.00, 1.19, 0.22, 0.27,
-       -0.24, 0.22, 1.17, 0.00,
-       -0.32, 0.27, 0.00, 1.27;
+  W << 1.09, 0.00, -0.24, -0.32, 0.00, 1.19, 0.22, 0.27, -0.24, 0.22, 1.17, 0.00, -0.32, 0.27, 0.00, 1.27;
   const Eigen::VectorXd q = (Eigen::VectorXd(4) << -0.73, -0.06, 0.43, -0.41).finished();
   const std::vector<double> bounds{0.19, 0.13};
   const double f = 1.0;
@@ -207,7 +219,10 @@ TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(4), y;
   std::vector<ContactState> state;
-  const auto report = solve_contact_gauss_seidel(W, q, f, bounds, {1e-14, 2000, 1.0}, r, &y, state);
+  const ContactSolver solver(W, {1e-14, 2000, 1.0}, DelassusLayout::dense);
+  PrakashCliftonBounds given(f, bounds);
+  const auto report = solver.solve(q, given, r, state);
+  solver.local_variables(q, r, y);
   ASSERT_TRUE(report.converged);
   EXPECT_LE(report.iterations, 30);
   EXPECT_EQ(report.n_bounds_released, 1);
@@ -234,7 +249,7 @@ TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
   for (int k = 0; k < n; ++k) q(2 * k + 1) = -0.025;
   Eigen::VectorXd r = Eigen::VectorXd::Zero(2 * n), y;
   std::vector<ContactState> state;
-  const auto report = solve_contact_gauss_seidel(W, q, 1.5, {}, {1e-13, 10000, model.d.p0 * model.d.h}, r, &y, state);
+  const auto report = solve_coulomb(W, q, 1.5, {1e-13, 10000, model.d.p0 * model.d.h}, r, y, state);
   ASSERT_TRUE(report.converged);
   for (int k = 0; k < n; ++k) {
     EXPECT_EQ(state[k], ContactState::stick);
@@ -250,9 +265,9 @@ TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
 // The dense W and its generating columns give the same solve: the same states and r to the tolerance (the
 // residual's start product sums in its own order, so not bit for bit).
 TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
-  const LayerModel model(testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
+  const LayerModel model(
+      testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
   const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff), model.mesh.n_contact());
-  const Eigen::MatrixXd columns = delassus_periodic_columns(W);
   const int n = model.mesh.n_contact();
   std::mt19937_64 generator(3);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -262,13 +277,21 @@ TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
       q(2 * k) = 0.02 * uniform(generator);
       q(2 * k + 1) = -0.025 + 0.03 * uniform(generator);  // some nodes open
     }
-    std::vector<double> bounds;
-    if (trial % 2) bounds.assign(n, 0.5 * model.d.p0 * model.d.h);
+    // Odd trials: a given bound per node, Prakash–Clifton's
+    const auto bounds = [&]() -> std::unique_ptr<FrictionBounds> {
+      if (trial % 2)
+        return std::make_unique<PrakashCliftonBounds>(1.5, std::vector<double>(n, 0.5 * model.d.p0 * model.d.h));
+      return std::make_unique<CoulombBounds>(1.5);
+    };
     const GaussSeidelSettings settings{1e-12, 200, model.d.p0 * model.d.h};
+    const ContactSolver dense(W, settings, DelassusLayout::dense),
+        circulant(W, settings, DelassusLayout::block_circulant);
     Eigen::VectorXd r_dense = Eigen::VectorXd::Zero(2 * n), r_columns = r_dense, y_dense, y_columns;
     std::vector<ContactState> state_dense, state_columns;
-    const auto a = solve_contact_gauss_seidel(W, q, 1.5, bounds, settings, r_dense, &y_dense, state_dense);
-    const auto b = solve_contact_gauss_seidel(W, q, 1.5, bounds, settings, r_columns, &y_columns, state_columns, &columns);
+    const auto a = dense.solve(q, *bounds(), r_dense, state_dense);
+    const auto b = circulant.solve(q, *bounds(), r_columns, state_columns);
+    dense.local_variables(q, r_dense, y_dense);
+    circulant.local_variables(q, r_columns, y_columns);
     EXPECT_GT(a.iterations, 2) << trial;
     EXPECT_NEAR(a.iterations, b.iterations, 1) << trial;
     EXPECT_TRUE(a.converged && b.converged) << trial;
