@@ -19,13 +19,7 @@
 namespace slidewave {
 namespace {
 
-Eigen::VectorXd random_vector(int n, std::uint64_t seed) {
-  std::mt19937_64 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd b(n);
-  for (int i = 0; i < n; ++i) b(i) = uniform(generator);
-  return b;
-}
+using testing::random_vector;
 
 struct Layer {
   RunConfig config;

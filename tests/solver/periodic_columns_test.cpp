@@ -9,6 +9,7 @@
 #include <random>
 
 #include "contact/delassus.hpp"
+#include "test_support.hpp"
 
 namespace slidewave {
 namespace {
@@ -30,12 +31,7 @@ Eigen::MatrixXd random_block_circulant(int n, std::mt19937_64& generator) {
   return W;
 }
 
-Eigen::VectorXd random_vector(Eigen::Index size, std::mt19937_64& generator) {
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (Eigen::Index i = 0; i < size; ++i) v(i) = uniform(generator);
-  return v;
-}
+using testing::random_vector;
 
 bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;

@@ -20,13 +20,7 @@
 namespace slidewave {
 namespace {
 
-Eigen::VectorXd random_vector(int n, std::uint64_t seed) {
-  std::mt19937_64 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd b(n);
-  for (int i = 0; i < n; ++i) b(i) = uniform(generator);
-  return b;
-}
+using testing::random_vector;
 
 double relative_difference(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) {
   return (x - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();

@@ -1,18 +1,34 @@
 #pragma once
 // Small helpers shared by the test files (no assertions here: each test states its own oracle).
 #include <unistd.h>
+#include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "config/run_config.hpp"
 
 namespace slidewave::testing {
+
+/// Entries uniform in [-1, 1) drawn from `generator`: the tests' reproducible vectors.
+inline Eigen::VectorXd random_vector(Eigen::Index size, std::mt19937_64& generator) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd v(size);
+  for (Eigen::Index i = 0; i < size; ++i) v(i) = uniform(generator);
+  return v;
+}
+
+/// The same from a generator seeded with `seed`.
+inline Eigen::VectorXd random_vector(Eigen::Index size, std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  return random_vector(size, generator);
+}
 
 inline const Integration kAllIntegrations[] = {Integration::full, Integration::reduced, Integration::reduced_pure};
 
