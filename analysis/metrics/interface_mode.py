@@ -112,8 +112,8 @@ def interface_wave_speed(run: RunData, mode: int = 1, field: str = "slip",
     maximum of the spectrum with |c| < band_edge reaches ``TRAPPED_RATIO`` of the maximum);
     ``trapped_ratio`` (its height, 0 without one); ``speed_plus``, ``speed_minus`` (m/s, the highest
     peak of each sign below band_edge, None without one or when nothing is trapped; their mean magnitude
-    is ``speed``); ``theory``
-    (c_gR in m/s, None without a generalized Rayleigh wave) and ``relative_error`` (speed / theory - 1).
+    is ``speed``); ``theory`` (c_gR in m/s, None without a generalized Rayleigh wave) and
+    ``relative_error`` (speed / theory - 1).
     """
     from analysis.theory.interface_wave import generalized_rayleigh_speed
 

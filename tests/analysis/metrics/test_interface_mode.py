@@ -23,7 +23,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from synthetic_run import paper_case
 
+from analysis import cli
 from analysis.core.io import load_run
 from analysis.metrics.interface_mode import exponential_poles, interface_wave_speed, mode_growth
 from analysis.theory.interface_wave import ElasticSolid, rayleigh_speed_ratio
@@ -146,3 +148,10 @@ def test_interface_mode_command_prints_the_measurement_and_the_theory(runs, tmp_
     assert printed["field"] == "slip_velocity"
     assert printed["growth_rate"] == pytest.approx(expected["growth_rate"], rel=1e-12)
     assert printed["theory_phase_speed"] == pytest.approx(expected["theory_phase_speed"], rel=1e-12)
+
+
+def test_interface_mode_command_refuses_a_rigid_flat_run_and_a_mode_out_of_range(runs, run_file, capsys):
+    assert cli.main(["interface-mode", str(run_file(paper_case()))]) == 2
+    assert "no substrate" in capsys.readouterr().err
+    assert cli.main(["interface-mode", str(runs["frictionless_wave"].path), "--mode", "16"]) == 2
+    assert "--mode 16" in capsys.readouterr().err
