@@ -38,9 +38,9 @@ CONFIGS = Path(__file__).resolve().parent / "interface_mode_configs"
 SPEED_TOLERANCE = 0.01
 #: Phase speed of the growing mode: measured within 0.3 % (both directions, modes 1 and 2).
 PHASE_TOLERANCE = 0.01
-#: Growth rate: measured within 0.8 % (mode 1, +x), 2.5 % (mode 1, -x), 2.7 % (mode 2, 16 elements a
-#: wavelength); the pole fit alone moves it by up to 3 % between windows and orders, and the mesh's
-#: dispersion and HHT's damping (hht_alpha 0.1) act on Im c, a small part of c: 10 % holds all of these.
+#: Growth rate: measured within 0.3 % (mode 1, +x and -x), 2.7 % (mode 2, 16 elements a wavelength);
+#: the pole fit alone moves it by up to 3 % between windows and orders, and the mesh's dispersion acts
+#: on Im c, a small part of c: 10 % holds all of these.
 GROWTH_TOLERANCE = 0.10
 #: Fit windows (s): from the seed's transient to before the mode's slip-rate swing reaches a few % of
 #: V0 (mode 2 grows twice as fast: half the times).
