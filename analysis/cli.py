@@ -1,6 +1,7 @@
 """Command line: `/usr/bin/python3 -m analysis COMMAND ...`, the one entry of every analysis command:
-measure, aggregate, compare, score-rules, energy-evidence, flutter-boundary, bimaterial, and the confidence studies
-ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds (analysis/confidence/commands.py).
+measure, aggregate, compare, score-rules, energy-evidence, flutter-boundary, bimaterial, interface-mode, and
+the confidence studies ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds
+(analysis/confidence/commands.py).
 
 Exit codes: 0 success; 1 `compare` found cells out of tolerance or of the wrong sign, or compared
 none; 2 bad input (the message on stderr names the file and the problem; no output file is
@@ -210,6 +211,21 @@ def _bimaterial(args: argparse.Namespace) -> int:
     return 0
 
 
+def _interface_mode(args: argparse.Namespace) -> int:
+    from analysis.core.io import load_run
+    from analysis.metrics.interface_mode import interface_wave_speed, mode_growth
+
+    run = load_run(args.run)
+    field = args.field or ("slip" if run.attr("f") == 0.0 else "slip_velocity")
+    if run.attr("f") == 0.0:
+        result = interface_wave_speed(run, args.mode, field, args.start, args.end)
+    else:
+        result = mode_growth(run, args.mode, field, args.start, args.end)
+    result = {"run": str(args.run), "mode": args.mode, "field": field, **result}
+    print(json.dumps(result, indent=2, allow_nan=False))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     from analysis.fronts.celerity import DEFAULT_MAJOR_DURATION, DEFAULT_THRESHOLD_REL, DEFAULT_WINDOW_LENGTH
 
@@ -293,6 +309,18 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
                         "of any family, forward and backward (docs/bimaterial-theory.md)")
     p.set_defaults(handler=_bimaterial)
+
+    p = commands.add_parser("interface-mode",
+                            help="one wavenumber of a run with a substrate against interface-wave theory: the "
+                                 "interface-wave speed (f = 0) or the growth rate and phase speed of steady "
+                                 "sliding (f > 0); JSON on stdout (analysis/metrics/interface_mode.py)")
+    p.add_argument("run", type=Path, help="run file with a substrate (format_version 3), seeded by `mode_seed`")
+    p.add_argument("--mode", type=int, default=1, help="wavelengths in the period (default %(default)s)")
+    p.add_argument("--field", default=None,
+                   help="interface field (default slip at f = 0, slip_velocity otherwise)")
+    p.add_argument("--start", type=float, default=None, help="window start (s, default the first output)")
+    p.add_argument("--end", type=float, default=None, help="window end (s, default the last output)")
+    p.set_defaults(handler=_interface_mode)
 
     from analysis.confidence.commands import add_commands
     add_commands(commands, _reference_options)

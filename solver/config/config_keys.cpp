@@ -188,6 +188,26 @@ std::vector<ConfigKey> make_table() {
               "every JSON reader holding numbers as doubles keeps exactly (a larger one would name two runs alike)",
               [](auto& c) -> auto& { return c.perturbation.seed; }),
 
+      // The single-mode seed (model/mode_seed.hpp): absent unless amplitude_over_H is given.
+      optional_number("mode_seed", "amplitude_over_H", open(0), "",
+                      "amplitude / H of a single-mode initial displacement of the layer, added to the random "
+                      "one: u_x = A cos(k x) exp(-k y), u_y = -A sin(k x) exp(-k y) at the free nodes (y above "
+                      "the interface; not the contact nodes' u_y: no gap, no penetration), k = 2 pi mode / "
+                      "lambda; null: none, and the group is left out of the resolved configuration",
+                      [](auto& c) -> auto& { return c.mode_seed.amplitude_over_H; }, closed(1e-2)),
+      integer("mode_seed", "mode", 1, 65536,
+              "wavelengths of the single-mode seed in the period; at most lambda / (4 h) (four elements a "
+              "wavelength); needs `mode_seed.amplitude_over_H`",
+              [](auto& c) -> auto& { return c.mode_seed.mode; }),
+      choice("mode_seed", "start", {{"rest", false}, {"sliding", true}},
+             "`rest`: the layer starts at rest, its top at V0 (the paper's start); `sliding`: every node of the "
+             "layer starts at V0, the steady sliding whose linear stability the seed probes. With f > 0 the "
+             "interface slips from the first step, its traction jumping from preshear_ratio f p0 to f p0, which "
+             "sends a uniform velocity jump (1 - preshear_ratio) f p0 / (rho c_s) into the layer: keep V0 well "
+             "above it (the checks: V0 = 0.01 c_s, and the slip rate stays within 1.5 % of V0). Needs "
+             "`mode_seed.amplitude_over_H`",
+             [](auto& c) -> auto& { return c.mode_seed.sliding_start; }),
+
       choice("numerics", "linear_solver",
              {{"spectral", LinearSolverKind::spectral}, {"cholmod", LinearSolverKind::cholmod}},
              "`spectral` (FFT in x, exact for this uniform periodic mesh: the free solve and the correction "

@@ -101,6 +101,18 @@ RunConfig parse_run_config(const nlohmann::json& input) {
                          short_number(c.geometry.H / c.mesh.elements_per_H) +
                          " m; allowed a whole number of elements in [2, 65536]");
   }
+  // The single-mode seed: its wavelength at least four elements; `mode` or `start`
+  // without an amplitude is a mistake.
+  if (input.contains("mode_seed") && input.at("mode_seed").is_object()) {
+    for (const char* name : {"mode", "start"})
+      if (!c.mode_seed.present() && input.at("mode_seed").contains(name))
+        problems.push_back(std::string("mode_seed.amplitude_over_H: missing; `mode_seed.") + name +
+                           "` needs it; allowed 0 < amplitude_over_H <= 0.01");
+    if (problems.empty() && c.mode_seed.present() && 4LL * c.mode_seed.mode > std::lround(n_x))
+      problems.push_back("mode_seed.mode: " + std::to_string(c.mode_seed.mode) + " wavelengths in a period of " +
+                         std::to_string(std::lround(n_x)) + " elements; allowed an integer in [1, " +
+                         std::to_string(std::lround(n_x) / 4) + "] (four elements a wavelength)");
+  }
   // The step count, once every value it depends on is valid (a count from a rejected value would mislead).
   if (problems.empty()) {
     const DerivedConstants d = c.derived();
@@ -162,6 +174,7 @@ nlohmann::json RunConfig::to_json() const {
     // No substrate (the rigid flat): the group is left out, so that such a run's resolved configuration is
     // what it was before the group existed.
     if (key.group == "substrate" && !substrate.present()) continue;
+    if (key.group == "mode_seed" && !mode_seed.present()) continue;  // likewise: no mode seed
     j[key.group][key.name] = key.get(*this);
   }
   return j;

@@ -56,6 +56,15 @@ struct PerturbationConfig {
   double amplitude = 1e-5;
   long long seed = 1;
 };
+/// A single-mode initial displacement of the layer (model/mode_seed.hpp), on top of the random one: what
+/// excites a chosen wavenumber in the checks against interface-wave theory (docs/substrate.md). Absent
+/// (amplitude null): no such seed, and the group is left out of the resolved configuration.
+struct ModeSeedConfig {
+  std::optional<double> amplitude_over_H;  ///< displacement amplitude / geometry.H
+  int mode = 1;                            ///< wavelengths in the period: k = 2 pi mode / lambda
+  bool sliding_start = false;              ///< the whole layer starts at V0 (steady sliding), not at rest
+  bool present() const { return amplitude_over_H.has_value(); }
+};
 struct NumericsConfig {
   /// spectral: FFT in x, one K_eff pass per step (the uniform periodic layer); cholmod: the general sparse
   /// path (two solves per step), kept as the tests' oracle
@@ -99,6 +108,7 @@ struct RunConfig {
   TimeConfig time;
   ContactConfig contact;
   PerturbationConfig perturbation;
+  ModeSeedConfig mode_seed;
   NumericsConfig numerics;
   OutputConfig output;
   SubstrateConfig substrate;

@@ -14,6 +14,7 @@
 #include "model/energy_ledger.hpp"
 #include "model/loop_state.hpp"
 #include "model/loop_state_arrays.hpp"
+#include "model/mode_seed.hpp"
 #include "model/recorder.hpp"
 #include "model/substrate.hpp"
 #include "time/hht_stepper.hpp"
@@ -67,10 +68,12 @@ class ProgressPacer {
   std::int64_t steps_since_report_ = 0;
 };
 
-/// Velocity of every DOF at the start of the dynamic stage: the top's u_x at V0, the rest at rest.
-Eigen::VectorXd top_velocity(const LayerModel& m) {
+/// Velocity of every DOF at the start of the dynamic stage: the top's u_x at V0, the rest at rest (or, with
+/// `mode_seed.start` = sliding, every u_x at V0).
+Eigen::VectorXd start_velocity(const LayerModel& m) {
   Eigen::VectorXd v = Eigen::VectorXd::Zero(m.n_free + m.n_top);
-  for (int i = 0; i < m.mesh.n_x; ++i) v(m.n_free + 2 * i) = m.d.V0;
+  const int first = m.config.mode_seed.sliding_start ? 0 : m.n_free;
+  for (int dof = first; dof < m.n_free + m.n_top; dof += 2) v(dof) = m.d.V0;
   return v;
 }
 
@@ -115,7 +118,7 @@ LoopState start_state(const LayerModel& m, const PreloadState& pre, const HHTSte
                       const FrictionLaw& friction, const EnergyLedger& ledger, const LinearSolver& M_ff) {
   LoopState loop;
   loop.t_end = m.config.time.t_end;
-  loop.dynamics = stepper.initial_state(pre.u, top_velocity(m), pre.r, M_ff);
+  loop.dynamics = stepper.initial_state(pre.u, start_velocity(m), pre.r, M_ff);
   loop.contact = pre.state;
   loop.friction = friction.initial_state(pre.r);
   loop.energy = ledger.start(loop.dynamics);
@@ -131,21 +134,22 @@ void start_substrate(const PreloadState& pre, SubstrateBody& sub, LoopState& loo
 
 /// Adds the seeded perturbation that breaks translation invariance: a uniform random displacement of every
 /// free DOF but the contact nodes' normal ones (no gap, no penetration), amplitude relative to the preshear
-/// top displacement, from std::mt19937_64(seed). The acceleration changes by M_ff da = -(K du)_f, which
-/// keeps M a + K u - C^T r, and with it the HHT step's carried state, as it was; the seed's elastic energy
-/// is part of the energy at the start.
+/// top displacement, from std::mt19937_64(seed), on top of the single-mode seed if there is one
+/// (model/mode_seed.hpp). The acceleration changes by M_ff da = -(K du)_f, which keeps M a + K u - C^T r,
+/// and with it the HHT step's carried state, as it was; the seed's elastic energy is part of the energy at
+/// the start.
 void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& ledger, const LinearSolver& M_ff,
               LoopState& loop) {
   const auto& c = m.config;
   const int n_f = m.n_free, n_c = m.n_contact_dofs;
-  Eigen::VectorXd du = Eigen::VectorXd::Zero(n_f + m.n_top);
+  Eigen::VectorXd du = mode_seed_displacement(m);
   std::mt19937_64 generator(static_cast<std::uint64_t>(c.perturbation.seed));
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   const double amplitude = c.perturbation.amplitude * std::fabs(pre.u_x_top);
   for (int dof = 0; dof < n_f; ++dof) {
     const double xi = uniform(generator);
     if (dof < n_c && dof % 2 == 1) continue;
-    du(dof) = amplitude * xi;
+    du(dof) += amplitude * xi;
   }
   HHTState& s = loop.dynamics;
   const double elastic_before = ledger.elastic(s);
@@ -236,7 +240,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   // 3. The state at t = 0 with the seed, and the output rows at t = 0; or, continuing a run, the state of
   //    its checkpoint (whose rows are already in the output).
   const auto M_ff = m.factorize(m.M_ff);
-  const EnergyLedger ledger(m, top_velocity(m).tail(m.n_top));
+  const EnergyLedger ledger(m, start_velocity(m).tail(m.n_top));
   LoopState loop = start_state(m, pre, stepper, *friction, ledger, *M_ff);
   add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);

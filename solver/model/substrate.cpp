@@ -16,6 +16,7 @@ RunConfig substrate_body_config(const RunConfig& layer) {
   body.geometry.lambda_over_H = static_cast<double>(d.n_x) / n_y;
   body.time.dt = d.dt;  // the layer's step (its ledger and stepper use the model's dt)
   body.output.snapshot_times.clear();
+  body.mode_seed = ModeSeedConfig{};  // the seed moves the layer only
   return body;
 }
 

@@ -38,6 +38,20 @@ CASES = {
                                                         "together"]),
     "substrate_unknown_key": ('{"substrate": {"E": 1000, "nu": 0.2, "rho": 1000, "H": 25, "G": 1}}',
                               ["substrate.G", "unknown key"]),
+    # issue 24 item 5: the single-mode seed of the checks against interface-wave theory
+    "mode_seed_amplitude_zero": ('{"mode_seed": {"amplitude_over_H": 0}}',
+                                 ["mode_seed.amplitude_over_H", "0 < amplitude_over_H <= 0.01"]),
+    "mode_seed_amplitude_large": ('{"mode_seed": {"amplitude_over_H": 0.5}}',
+                                  ["mode_seed.amplitude_over_H", "0 < amplitude_over_H <= 0.01"]),
+    "mode_seed_mode_zero": ('{"mode_seed": {"amplitude_over_H": 1e-6, "mode": 0}}',
+                            ["mode_seed.mode", "[1, 65536]"]),
+    # 64 elements a period at the default H/32, lambda 2H: at most 16 wavelengths of four elements
+    "mode_seed_mode_too_short": ('{"mode_seed": {"amplitude_over_H": 1e-6, "mode": 17}}',
+                                 ["mode_seed.mode", "[1, 16]", "four elements"]),
+    "mode_seed_mode_alone": ('{"mode_seed": {"mode": 2}}', ["mode_seed.amplitude_over_H", "missing"]),
+    "mode_seed_start_alone": ('{"mode_seed": {"start": "sliding"}}', ["mode_seed.amplitude_over_H", "missing"]),
+    "mode_seed_start_bad": ('{"mode_seed": {"amplitude_over_H": 1e-6, "start": "moving"}}',
+                            ["mode_seed.start", "rest|sliding"]),
 }
 
 

@@ -39,14 +39,16 @@ TEST(ConfigKeys, EveryKeyOnceAndEveryMemberInTheResolvedConfig) {
   std::set<std::string> paths;
   for (const auto& k : config_keys()) EXPECT_TRUE(paths.insert(k.path()).second) << k.path() << " twice";
   std::set<std::string> resolved;
-  // The substrate group is resolved only when given (absent: the rigid flat, docs/substrate.md).
+  // The substrate and mode_seed groups are resolved only when given (absent: the rigid flat, no mode seed).
   RunConfig with_substrate;
   with_substrate.substrate = SubstrateConfig{3e3, 0.3, 2e3, 25.0};
+  with_substrate.mode_seed.amplitude_over_H = 1e-6;
   const json defaults = with_substrate.to_json();  // items() does not keep a temporary alive
   for (const auto& [group, keys] : defaults.items())
     for (const auto& [name, _] : keys.items()) resolved.insert(group + "." + name);
   EXPECT_EQ(paths, resolved);
   EXPECT_FALSE(RunConfig{}.to_json().contains("substrate")) << "no substrate: the group is left out";
+  EXPECT_FALSE(RunConfig{}.to_json().contains("mode_seed")) << "no mode seed: the group is left out";
 }
 
 TEST(ConfigKeys, EveryDefaultIsAllowed) {
