@@ -13,7 +13,7 @@ import pytest
 import yaml
 from PIL import Image
 
-from figure_support import PAPER, ROOT
+from figure_support import ROOT
 
 PDFTOPPM = shutil.which("pdftoppm")
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
