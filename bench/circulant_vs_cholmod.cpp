@@ -14,6 +14,7 @@
 
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include "mesh_options.hpp"
 #include "model/layer_model.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -66,11 +67,8 @@ int main(int argc, char** argv) {
   double min_time = 1.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--n") {
-      while (i + 1 < argc && argv[i + 1][0] != '-') resolutions.push_back(std::atoi(argv[++i]));
-    } else if (a == "--lambda") {
-      while (i + 1 < argc && argv[i + 1][0] != '-') lambdas.push_back(std::atof(argv[++i]));
-    } else if (a == "--min-time" && i + 1 < argc) {
+    if (slidewave::bench::mesh_option(a, argc, argv, i, resolutions, lambdas)) continue;
+    if (a == "--min-time" && i + 1 < argc) {
       min_time = std::atof(argv[++i]);
     } else {
       std::fprintf(stderr, "usage: %s [--n N...] [--lambda L...] [--min-time SECONDS]\n", argv[0]);

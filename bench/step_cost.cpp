@@ -28,6 +28,7 @@
 
 #include "fem/stencil_product.hpp"
 #include "io/run_session.hpp"
+#include "mesh_options.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "time/hht_stepper.hpp"
@@ -115,11 +116,8 @@ int main(int argc, char** argv) {
   double substrate_ratio = 0;  // 0: the rigid flat
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--n") {
-      while (i + 1 < argc && argv[i + 1][0] != '-') resolutions.push_back(std::atoi(argv[++i]));
-    } else if (a == "--lambda") {
-      while (i + 1 < argc && argv[i + 1][0] != '-') lambdas.push_back(std::atof(argv[++i]));
-    } else if (a == "--t-end" && i + 1 < argc) {
+    if (slidewave::bench::mesh_option(a, argc, argv, i, resolutions, lambdas)) continue;
+    if (a == "--t-end" && i + 1 < argc) {
       t_end = std::atof(argv[++i]);
     } else if (a == "--nu" && i + 1 < argc) {
       nu = std::atof(argv[++i]);
