@@ -105,11 +105,12 @@ struct SubstrateBody {
   Eigen::VectorXd u_bottom, S_r;
 };
 
-/// Steps to the first time at or after t_end.
-std::int64_t n_steps_to(double t_end, double dt) {
-  const double n = std::ceil(t_end / dt - 1e-9);
-  if (!(n < 9.2e18)) throw std::overflow_error("time: t_end / dt = " + std::to_string(n) + " steps overflows 64 bits");
-  return static_cast<std::int64_t>(n);
+/// Steps to the first time at or after t_end: the configuration's count (DerivedConstants::n_steps, the one
+/// formula), which parsing bounds by time.max_steps; the check guards a configuration made without parsing.
+std::int64_t step_count(const DerivedConstants& d) {
+  if (!(d.n_steps < 9.2e18))
+    throw std::overflow_error("time: t_end / dt = " + std::to_string(d.n_steps) + " steps overflows 64 bits");
+  return static_cast<std::int64_t>(d.n_steps);
 }
 
 /// State at t = 0 of the dynamic stage, before the seed: the preload, the top moving at V0, the acceleration
@@ -248,7 +249,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     start_substrate(pre, *sub, loop);
     recorder.attach_substrate(sub->ledger);
   }
-  const std::int64_t n_steps_max = n_steps_to(c.time.t_end, hht.dt);
+  const std::int64_t n_steps_max = step_count(m.d);
   if (observer) observer->setup_done();
   const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
   if (const StateArrays* resumed = observer ? observer->start_state() : nullptr) {
