@@ -11,6 +11,9 @@ PER_SWEEP = ("phase_diagram", "celerity_vs_nu", "deviation_map", "tn_curves", "t
 #: Drawn per point: spacetime_<field>_<point> (the sweep's `maps`), snapshots_<point>.
 PER_POINT = ("spacetime", "snapshots")
 FIGURE_KINDS = PER_SWEEP + PER_POINT
+#: Drawn from the runs' run.h5 rather than from tables: left out of the report built from the committed
+#: tables (study/rules/publish.smk).
+FROM_RUNS = ("tn_curves", "tn_aligned", "spacetime", "snapshots")
 #: The products that are not figures: the comparison with the paper, the HTML report, the ensemble table.
 OTHER_PRODUCTS = ("comparison", "report", "ensemble")
 PRODUCTS = OTHER_PRODUCTS + FIGURE_KINDS

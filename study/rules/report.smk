@@ -53,15 +53,13 @@ rule report:
 
 PAPER_PDF = "paper/reproduction.pdf"
 PAPER_SOURCES = ("reproduction.tex", "how_sure.tex")
-# Figures drawn from the runs' HDF5 rather than from tables: left out (the report frames a note in their
-# place) when the report is built from the committed tables.
-RUN_FIGURES = ("spacetime", "snapshots", "tn_curves", "tn_aligned")
 
 
 def paper_figures():
-    """paper/generated/<name>.pdf of config `paper.figures` that this build can draw."""
+    """paper/generated/<name>.pdf of config `paper.figures` that this build can draw: without the runs
+    (from_committed), not those drawn from run.h5 (the report frames a note in their place)."""
     names = [name for name, entry in config["paper"]["figures"].items()
-             if not (FROM_COMMITTED and entry["figure"].startswith(RUN_FIGURES))]
+             if not (FROM_COMMITTED and entry["figure"].startswith(figure_kinds.FROM_RUNS))]
     return [f"paper/generated/{name}.pdf" for name in names]
 
 

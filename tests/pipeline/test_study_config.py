@@ -186,5 +186,9 @@ def test_the_figure_kinds_are_the_one_list(study_config):
         assert (REPO / "figures" / f"{kind}.py").is_file(), kind
         assert any(stem.startswith(kind) for stem in report.CAPTIONS), kind
     assert rules == {f"fig_{kind}" for kind in figure_kinds.FIGURE_KINDS}
+    # FROM_RUNS: exactly the kinds whose rule reads a run.h5 (the rest draw from tables).
+    text = (REPO / "study" / "rules" / "figures.smk").read_text()
+    blocks = dict(re.findall(r"^rule fig_(\w+):\n(.*?)(?=^rule |\Z)", text, re.MULTILINE | re.DOTALL))
+    assert {kind for kind in figure_kinds.FIGURE_KINDS if "run.h5" in blocks[kind]} == set(figure_kinds.FROM_RUNS)
     for sweep in study_config["sweeps"].values():
         assert set(sweep.get("products", [])) <= set(figure_kinds.PRODUCTS)
