@@ -7,13 +7,14 @@
 // conditions then hold at every node with y = 0 exactly. Otherwise it is not a solution and the step is left to
 // Gauss–Seidel.
 //
-// W^{-1} of a block-circulant W is block-circulant too: its two generating columns (solved once, with
-// W's Cholesky factor) give every product through the same kernel as W's (periodic_residual).
+// W^{-1} of a block-circulant W is block-circulant too, with the inverse 2 x 2 block per wavenumber: one
+// product by FFT (contact/block_circulant_product.hpp), O(n log n) where the dense product is O(n^2).
 // The r found differs from the Gauss–Seidel one only within that solve's tolerance; the run's results move
 // by what that round-off grows to (contact.all_stick, docs/contact-solver.md).
 #include <Eigen/Dense>
 #include <vector>
 
+#include "contact/block_circulant_product.hpp"
 #include "contact/coulomb_local.hpp"
 #include "contact/friction_bounds.hpp"
 
@@ -32,8 +33,8 @@ class AllStickSolution {
 
  private:
   int n_nodes_;
-  Eigen::MatrixXd inverse_columns_;  ///< generating columns of W^{-1}, stacked twice (4n x 2)
-  Eigen::VectorXd zero_, minus_q_, trial_;
+  BlockCirculantProduct inverse_;  ///< products with W^{-1}
+  Eigen::VectorXd trial_;
 };
 
 }  // namespace slidewave

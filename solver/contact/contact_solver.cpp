@@ -13,13 +13,14 @@ ContactSolver::ContactSolver(const Eigen::MatrixXd& W, const GaussSeidelSettings
   for (int k = 0; k < n_nodes_; ++k) diagonal_blocks_[k] = W.block<2, 2>(2 * k, 2 * k);
   if (layout == DelassusLayout::block_circulant) {
     periodic_columns_ = delassus_periodic_columns(W);
+    periodic_product_.emplace(W.leftCols<2>());
     all_stick_.emplace(W);
   }
 }
 
 void ContactSolver::local_variables(const Eigen::VectorXd& q, const Eigen::VectorXd& r, Eigen::VectorXd& y) const {
-  if (periodic_columns_.size() > 0)
-    periodic_residual(periodic_columns_, n_nodes_, q, r, y);
+  if (periodic_product_)
+    periodic_product_->residual(q, r, y);
   else
     y = q + W_ * r;
 }

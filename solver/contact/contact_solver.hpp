@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "contact/all_stick.hpp"
+#include "contact/block_circulant_product.hpp"
 #include "contact/coulomb_local.hpp"
 #include "contact/friction_bounds.hpp"
 
@@ -62,9 +63,10 @@ struct GaussSeidelSettings {
 /// How W is read.
 enum class DelassusLayout {
   dense,           ///< any SPD W: products with W itself
-  block_circulant  ///< W as delassus_operator_periodic makes it: products through its two generating
+  block_circulant  ///< W as delassus_operator_periodic makes it: node updates through its two generating
                    ///< columns (delassus_periodic_columns; the same numbers and operations, so the same
-                   ///< sweeps bit for bit), and the exact all-stick solution (contact/all_stick.hpp)
+                   ///< sweeps bit for bit), the product W r by FFT (contact/block_circulant_product.hpp),
+                   ///< and the exact all-stick solution (contact/all_stick.hpp)
 };
 
 class ContactSolver {
@@ -101,8 +103,9 @@ class ContactSolver {
   GaussSeidelSettings settings_;
   int n_nodes_;
   std::vector<Eigen::Matrix2d> diagonal_blocks_;
-  Eigen::MatrixXd periodic_columns_;           ///< delassus_periodic_columns(W) (block-circulant W), else empty
-  std::optional<AllStickSolution> all_stick_;  ///< block-circulant W only
+  Eigen::MatrixXd periodic_columns_;  ///< delassus_periodic_columns(W) (block-circulant W), else empty
+  std::optional<BlockCirculantProduct> periodic_product_;  ///< W r by FFT (block-circulant W)
+  std::optional<AllStickSolution> all_stick_;              ///< block-circulant W only
 };
 
 }  // namespace slidewave

@@ -1,7 +1,6 @@
 #include "contact/delassus.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 // Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX2 and AVX-512F machines have
 // FMA), which rounds once where the baseline code rounds twice. The clones then differ from the baseline
@@ -62,43 +61,6 @@ void add_two_columns(const double* __restrict c0, const double* __restrict c1, d
   for (Eigen::Index i = 0; i < n; ++i) out[i] += c0[i] * d0 + c1[i] * d1;
 }
 
-/// Eight doubles as one value (GCC vector extension: one AVX-512 register, two AVX2, four SSE2), loaded
-/// unaligned by memcpy; its + and * are per lane, the same IEEE operations as on scalars.
-typedef double Lanes8 __attribute__((vector_size(64)));
-
-/// out_i = out_i + sum_j column_j[i] coefficient_j, the sum taken from 0 in column order, i < n. Written
-/// over explicit vectors of 32 rows, whose partial sums stay in registers: left to itself, GCC vectorizes
-/// across the columns (gathers) instead.
-SLIDEWAVE_MULTIVERSIONED
-void add_column_block(const double* const* __restrict column, const double* __restrict coefficient, int n_columns,
-                      double* __restrict out, Eigen::Index n) {
-  Eigen::Index i0 = 0;
-  for (; i0 + 32 <= n; i0 += 32) {
-    Lanes8 s0 = {}, s1 = {}, s2 = {}, s3 = {};
-    for (int j = 0; j < n_columns; ++j) {
-      const double* c = column[j] + i0;
-      const double a = coefficient[j];
-      Lanes8 c0, c1, c2, c3;
-      std::memcpy(&c0, c, sizeof c0);
-      std::memcpy(&c1, c + 8, sizeof c1);
-      std::memcpy(&c2, c + 16, sizeof c2);
-      std::memcpy(&c3, c + 24, sizeof c3);
-      s0 += c0 * a;
-      s1 += c1 * a;
-      s2 += c2 * a;
-      s3 += c3 * a;
-    }
-    const Lanes8 sums[4] = {s0, s1, s2, s3};
-    for (int v = 0; v < 4; ++v)
-      for (int t = 0; t < 8; ++t) out[i0 + 8 * v + t] += sums[v][t];
-  }
-  for (Eigen::Index i = i0; i < n; ++i) {
-    double sum = 0;
-    for (int j = 0; j < n_columns; ++j) sum += column[j][i] * coefficient[j];
-    out[i] += sum;
-  }
-}
-
 /// Start of W(:, 2k) (and of W(:, 2k + 1) in the second column) within the stacked generating columns.
 Eigen::Index column_start(int n_nodes, int k) { return 2 * ((n_nodes - k) % n_nodes); }
 
@@ -108,23 +70,6 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
                                Eigen::VectorXd& y) {
   const Eigen::Index start = column_start(n_nodes, k);
   add_two_columns(columns.data() + start, columns.data() + columns.rows() + start, d0, d1, y.data(), 2 * n_nodes);
-}
-
-void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
-                       Eigen::VectorXd& y) {
-  const Eigen::Index n_c = 2 * n_nodes;
-  y = q;
-  // Blocks of 16 columns: their partial sums stay in registers over a 32-row stripe of y.
-  constexpr int kBlock = 16;
-  const double* column[kBlock];
-  for (Eigen::Index j0 = 0; j0 < n_c; j0 += kBlock) {
-    const int n_block = static_cast<int>(std::min<Eigen::Index>(kBlock, n_c - j0));
-    for (int j = 0; j < n_block; ++j) {
-      const Eigen::Index col = j0 + j;
-      column[j] = columns.data() + (col % 2) * columns.rows() + column_start(n_nodes, static_cast<int>(col / 2));
-    }
-    add_column_block(column, r.data() + j0, n_block, y.data(), n_c);
-  }
 }
 
 }  // namespace slidewave

@@ -26,8 +26,8 @@ Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_cont
 /// read for their in-place updates, contact/contact_solver.hpp).
 Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 
-// ---- Products with a block-circulant W read from its generating columns ----
-// The two products of the Gauss–Seidel contact solve (contact/contact_solver.hpp) with a block-circulant
+// ---- The Gauss–Seidel node update with a block-circulant W read from its generating columns ----
+// The in-place update of the Gauss–Seidel contact solve (contact/contact_solver.hpp) with a block-circulant
 // Delassus operator W, computed from its two generating columns (delassus_periodic_columns, a 4n x 2
 // matrix C with W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n)) instead of the dense 2n x 2n W:
 // C fits in the cache where W does not.
@@ -41,9 +41,5 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 /// @param columns delassus_periodic_columns(W), 4n x 2;  @param k node, 0 <= k < n_nodes
 void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
                                Eigen::VectorXd& y);
-
-/// y = q + W r (y = q, then per block of 16 columns a sum over the block in column order, added to y).
-void periodic_residual(const Eigen::MatrixXd& columns, int n_nodes, const Eigen::VectorXd& q, const Eigen::VectorXd& r,
-                       Eigen::VectorXd& y);
 
 }  // namespace slidewave

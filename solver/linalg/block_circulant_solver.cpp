@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "linalg/fftw_planner.hpp"
 #include "linalg/thread_team.hpp"
 
 namespace slidewave {
@@ -129,12 +130,6 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
   return {};
 }
 
-/// The FFTW planner is not thread-safe (FFTW manual, sec. 5.2); execution of distinct plans is.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
 }  // namespace
 
 struct BlockCirculantSolver::FftPlans {
@@ -143,7 +138,7 @@ struct BlockCirculantSolver::FftPlans {
   fftw_plan forward[3] = {}, inverse[3] = {};
   double *re[3] = {}, *im[3] = {};
   ~FftPlans() {
-    std::lock_guard<std::mutex> lock(planner_mutex());
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     for (int k = 0; k < 3; ++k) {
       if (forward[k]) fftw_destroy_plan(forward[k]);
       if (inverse[k]) fftw_destroy_plan(inverse[k]);
@@ -245,7 +240,7 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
   // so this costs little).
   const unsigned flags = FFTW_ESTIMATE | FFTW_UNALIGNED | FFTW_NO_SIMD;
   {
-    std::lock_guard<std::mutex> lock(planner_mutex());
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     const fftw_iodim forward_dim{n_x, 2, 1};
     const fftw_iodim forward_loop{2, 1, lanes};  // d = 0, 1
     const fftw_iodim inverse_dim{n_x, 1, 2};

@@ -30,6 +30,23 @@ inline Eigen::VectorXd random_vector(Eigen::Index size, std::uint64_t seed) {
   return random_vector(size, generator);
 }
 
+/// Random block-circulant W of n nodes (2n x 2n), the structure delassus_operator_periodic builds
+/// (the kernels do not rely on its symmetry).
+inline Eigen::MatrixXd random_block_circulant(int n, std::mt19937_64& generator) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd z0(2 * n), z1(2 * n);
+  for (int i = 0; i < 2 * n; ++i) z0(i) = uniform(generator), z1(i) = uniform(generator);
+  Eigen::MatrixXd W(2 * n, 2 * n);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k)
+      for (int a = 0; a < 2; ++a) {
+        const int s = 2 * (((i - k) % n + n) % n) + a;
+        W(2 * i + a, 2 * k) = z0(s);
+        W(2 * i + a, 2 * k + 1) = z1(s);
+      }
+  return W;
+}
+
 inline const Integration kAllIntegrations[] = {Integration::full, Integration::reduced, Integration::reduced_pure};
 
 inline std::string integration_name(Integration i) {
