@@ -209,7 +209,16 @@ def find_edges(x: np.ndarray, t: np.ndarray, v: np.ndarray, threshold: float, *,
     v = np.asarray(v, dtype=float)
     left_edges, right_edges, run_peaks = [], [], []
     n_slipping = n_edges = 0
-    for row in v:
+    # A frame where no node exceeds the threshold (the whole stick phase) has an empty slipping set and no
+    # edges: answered without cleaning its mask (the same result, at a fraction of the cost).
+    any_above = (v > threshold).any(axis=1)
+    empty = np.empty(0)
+    for row, above in zip(v, any_above):
+        if not above:
+            left_edges.append(empty)
+            right_edges.append(empty)
+            run_peaks.append(empty)
+            continue
         mask = slipping_mask(row, threshold, min_width_nodes, fill_gap_nodes)
         n_slipping += bool(mask.any())
         left, right, peaks = edge_positions(row, mask, threshold, grid)
