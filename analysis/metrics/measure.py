@@ -98,7 +98,8 @@ def _substrate(m: Measured) -> dict[str, Any]:
         return dict.fromkeys(("E_substrate_over_E", "substrate_nu", "substrate_rho_over_rho", "substrate_H_over_H"))
     layer = m.parameters
     return {"E_substrate_over_E": substrate["E"] / layer["E"], "substrate_nu": substrate["nu"],
-            "substrate_rho_over_rho": substrate["rho"] / layer["rho"], "substrate_H_over_H": substrate["H"] / layer["H"]}
+            "substrate_rho_over_rho": substrate["rho"] / layer["rho"],
+            "substrate_H_over_H": substrate["H"] / layer["H"]}
 
 
 @family("constants and settings", ("c_s", "c_l", "sqrt2_c_s", "p0", "V0", "lambda", "dx", "output_interval",

@@ -143,7 +143,8 @@ def contrast_theory_points(sweep):
 
 rule contrast_theory:
     """The bimaterial theory at a contrast sweep's points (analysis/theory/contrast_theory.py): the onset f
-    of each family of growing modes and the most unstable mode; ~3 min of CPU for `contrast`."""
+    of each family of growing modes and the most unstable mode; ~2 min of CPU for `contrast` (a threshold of the
+    near-rigid substrate takes ~30 s)."""
     output: "results/{sweep}/theory/contrast_theory.csv"
     params:
         points=lambda wc: contrast_theory_points(wc.sweep),
