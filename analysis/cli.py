@@ -1,5 +1,6 @@
 """Command line: `/usr/bin/python3 -m analysis COMMAND ...`, the one entry of every analysis command:
-measure, aggregate, compare, score-rules, energy-evidence, flutter-boundary, bimaterial, interface-mode, and
+measure, aggregate, compare, score-rules, energy-evidence, flutter-boundary, bimaterial, contrast-theory,
+interface-mode, and
 the confidence studies ensemble, envelope, mesh-limit, timestep-limit, timeline, pulse-seeds
 (analysis/confidence/commands.py).
 
@@ -211,6 +212,27 @@ def _bimaterial(args: argparse.Namespace) -> int:
     return 0
 
 
+def _contrast_theory(args: argparse.Namespace) -> int:
+    from analysis.core.atomic import write_file
+    from analysis.core.table_csv import csv_text
+    from analysis.theory.contrast_theory import COLUMNS, contrast_theory_rows
+
+    points = []
+    for nu, contrast, f in args.point:
+        try:
+            points.append((float(nu), None if contrast == "rigid" else float(contrast), float(f)))
+        except ValueError:
+            raise InputError(f"--point {nu} {contrast} {f}: expected NU CONTRAST F, numbers (CONTRAST may be "
+                             "'rigid')") from None
+    try:
+        rows = contrast_theory_rows(points, E=args.E, rho=args.rho)
+    except ValueError as err:
+        raise InputError(f"--point: {err}") from None
+    write_file(args.output, csv_text(COLUMNS, rows))
+    print(f"theory of {len(rows)} points -> {args.output}")
+    return 0
+
+
 def _interface_mode(args: argparse.Namespace) -> int:
     from analysis.core.io import load_run
     from analysis.metrics.interface_mode import interface_wave_speed, mode_growth
@@ -309,6 +331,17 @@ def build_parser() -> argparse.ArgumentParser:
                    help="also print the smallest f with a growing mode (0 with a generalized Rayleigh wave), "
                         "of any family, forward and backward (docs/bimaterial-theory.md)")
     p.set_defaults(handler=_bimaterial)
+
+    p = commands.add_parser("contrast-theory",
+                            help="the bimaterial theory at the points of a contrast sweep: onsets of each family "
+                                 "and the most unstable mode, CSV (analysis/theory/contrast_theory.py)")
+    p.add_argument("--point", nargs=3, action="append", required=True, metavar=("NU", "CONTRAST", "F"),
+                   help="nu, E_substrate / E ('rigid': the rigid flat) and f of one point (repeatable)")
+    p.add_argument("--E", type=float, default=1000.0, help="E of the layer, Pa (default %(default)g)")
+    p.add_argument("--rho", type=float, default=1000.0, help="rho of the layer and the substrate, kg/m^3 "
+                                                             "(default %(default)g)")
+    p.add_argument("-o", "--output", type=Path, required=True, help="CSV to write")
+    p.set_defaults(handler=_contrast_theory)
 
     p = commands.add_parser("interface-mode",
                             help="one wavenumber of a run with a substrate against interface-wave theory: the "

@@ -7,7 +7,7 @@ report's captions (study/scripts/report.py) agree with this list."""
 
 #: Drawn once per sweep: results/<sweep>/figures/<kind>.png and .pdf.
 PER_SWEEP = ("phase_diagram", "celerity_vs_nu", "deviation_map", "tn_curves", "tn_aligned", "pulse_spacing",
-             "convergence")
+             "convergence", "contrast_phase_diagram")
 #: Drawn per point: spacetime_<field>_<point> (the sweep's `maps`), snapshots_<point>.
 PER_POINT = ("spacetime", "snapshots")
 FIGURE_KINDS = PER_SWEEP + PER_POINT

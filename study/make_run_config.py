@@ -7,6 +7,11 @@ SPEC_JSON (built by the Snakefile from the validated study config) holds
 (duration_transits, stop_after_opening_transits, t_end), `snapshot_offsets_transits` (bulk snapshots,
 in transit times after the onset estimate) and `solver` (extra solver keys, merged last; they may not
 redefine a key set here).
+
+A point with a contrast `E_substrate_over_E` gets the solver group `substrate` (docs/substrate.md):
+E = E_substrate_over_E E, and the layer's nu, rho and H (a substrate of another nu, rho or thickness is
+a sweep's full `solver: {substrate: {E, nu, rho, H}}` instead; both at once is an error). A point
+without one (or with None) writes no `substrate` group: the rigid flat, the config text of before.
 """
 
 from __future__ import annotations
@@ -17,6 +22,7 @@ import sys
 from pathlib import Path
 
 from study.run_length import run_length
+from study.sweeps import CONTRAST
 
 
 def _merge_new_keys(base: dict, extra: dict, path: str = "") -> None:
@@ -32,14 +38,27 @@ def _merge_new_keys(base: dict, extra: dict, path: str = "") -> None:
             base[key] = value
 
 
+def substrate_of(point: dict, model: dict, solver: dict) -> dict | None:
+    """The solver's `substrate` group of a point: from its contrast, else the sweep's `solver.substrate`,
+    else None (the rigid flat)."""
+    contrast = point.get(CONTRAST)
+    if contrast is None:
+        return solver.get("substrate")
+    if "substrate" in solver:
+        raise ValueError(f"point {CONTRAST} = {contrast:g} and solver.substrate both set the substrate; "
+                         "give one of them")
+    return {"E": contrast * model["E"], "nu": point["nu"], "rho": point["rho"], "H": model["H"]}
+
+
 def run_config(spec: dict) -> dict:
     """The solver configuration of one point (a dict ready for json.dump)."""
     point, model, length = spec["point"], spec["model"], spec["run_length"]
+    substrate = substrate_of(point, model, spec.get("solver", {}))
     times = run_length(E=model["E"], nu=point["nu"], rho=point["rho"], H=model["H"], f=point["f"],
                        Uy_over_H=model["Uy_over_H"], preshear_ratio=model["preshear_ratio"],
                        V0_over_cs=point["V0_over_cs"], duration_transits=length["duration_transits"],
                        stop_after_opening_transits=length.get("stop_after_opening_transits"),
-                       t_end=length.get("t_end"))
+                       t_end=length.get("t_end"), substrate=substrate)
     snapshots = sorted(times.t_onset_estimate + offset * times.transit_time
                        for offset in spec.get("snapshot_offsets_transits", []))
     if snapshots and (snapshots[0] < 0 or snapshots[-1] > times.t_end):
@@ -57,6 +76,8 @@ def run_config(spec: dict) -> dict:
     }
     if snapshots:
         config["output"] = {"snapshot_times": snapshots}
+    if point.get(CONTRAST) is not None:
+        config["substrate"] = substrate
     _merge_new_keys(config, spec.get("solver", {}))
     return config
 

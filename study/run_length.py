@@ -19,6 +19,15 @@ A run ends at
 
 (a cap), or earlier, stop_after_opening_transits t_s after the interface first opens (the solver's
 `time.stop_after_opening`). See study/README.md for the chosen values and why.
+
+On a deformable substrate (E_s, nu_s, H_s; docs/substrate.md) the two bodies are loaded in series:
+the preload pressure is shared, p0 = -Uy / (H / M + H_s / M_s), and so is the shear stress, so the top
+moves tau (H / G + H_s / G_s) to carry it:
+
+    t_onset = (1 - r) f p0 (H / G + H_s / G_s) / V0,   M = E (1 - nu) / ((1 + nu)(1 - 2 nu))      (1')
+
+(analysis.theory.elastic.pair_onset_time_estimate). With the substrate's nu and thickness equal to the
+layer's, both compliances grow by 1 + E / E_s and (1') is (1) again: only p0 is lower.
 """
 
 from __future__ import annotations
@@ -53,7 +62,8 @@ def onset_time_estimate(*, E: float, nu: float, rho: float, H: float, f: float,
 
 def run_length(*, E: float, nu: float, rho: float, H: float, f: float, Uy_over_H: float,
                preshear_ratio: float, V0_over_cs: float, duration_transits: float,
-               stop_after_opening_transits: float | None, t_end: float | None = None) -> RunLength:
+               stop_after_opening_transits: float | None, t_end: float | None = None,
+               substrate: dict | None = None) -> RunLength:
     """Run length of one point.
 
     Parameters
@@ -66,6 +76,9 @@ def run_length(*, E: float, nu: float, rho: float, H: float, f: float, Uy_over_H
         End the run this many transit times after the first opening; None runs to the cap.
     t_end
         Explicit end time (s), overriding eq. (2) (e.g. the long stick-slip run).
+    substrate
+        The deformable substrate's `E`, `nu`, `H` (the solver's `substrate` group; other keys are
+        ignored): the onset of eq. (1'); None: the rigid flat, eq. (1).
 
     Returns
     -------
@@ -78,8 +91,14 @@ def run_length(*, E: float, nu: float, rho: float, H: float, f: float, Uy_over_H
     if t_end is not None and t_end <= 0:
         raise ValueError(f"t_end must be > 0 or None, got {t_end}")
     transit = H / shear_wave_speed(E, nu, rho)
-    t_onset = onset_time_estimate(E=E, nu=nu, rho=rho, H=H, f=f, Uy_over_H=Uy_over_H,
-                                  preshear_ratio=preshear_ratio, V0_over_cs=V0_over_cs)
+    if substrate is None:
+        t_onset = onset_time_estimate(E=E, nu=nu, rho=rho, H=H, f=f, Uy_over_H=Uy_over_H,
+                                      preshear_ratio=preshear_ratio, V0_over_cs=V0_over_cs)
+    else:
+        t_onset, _ = elastic.pair_onset_time_estimate(
+            f=f, preshear_ratio=preshear_ratio, Uy=Uy_over_H * H, H=H, E=E, nu=nu,
+            V0=V0_over_cs * shear_wave_speed(E, nu, rho), H_s=substrate["H"], E_s=substrate["E"],
+            nu_s=substrate["nu"])
     end = t_end if t_end is not None else t_onset + duration_transits * transit
     stop = None if stop_after_opening_transits is None else stop_after_opening_transits * transit
     return RunLength(t_onset_estimate=t_onset, transit_time=transit, t_end=end, stop_after_opening=stop)

@@ -19,7 +19,11 @@ from pathlib import Path
 
 #: Swept parameters, in the order they appear in a point's name.
 POINT_KEYS = ("nu", "f", "V0_over_cs", "lambda_over_H", "elements_per_H", "rho", "integration", "seed",
-              "dt_times_cs")
+              "dt_times_cs", "E_substrate_over_E")
+
+#: The material contrast of a deformable substrate (docs/substrate.md), E_substrate / E; absent or None:
+#: the paper's rigid flat (study/make_run_config.py writes no `substrate` group, the run is the same).
+CONTRAST = "E_substrate_over_E"
 
 #: Values left out of the name because every point of the paper has them (dt = 0.5 m / c_s: the
 #: paper's time step).
@@ -53,7 +57,7 @@ def _decimal(x: float) -> str:
 
 def point_name(point: dict) -> str:
     """Directory name that spells the point's parameters, e.g.
-    ``nu0.20_f1.50_v1e-05_L2_n32_rho1000_reduced``."""
+    ``nu0.20_f1.50_v1e-05_L2_n32_rho1000_reduced`` (``..._Es3`` on a substrate 3 times stiffer)."""
     name = (f"nu{_decimal(point['nu'])}_f{_decimal(point['f'])}_v{point['V0_over_cs']:g}"
             f"_L{point['lambda_over_H']:g}_n{point['elements_per_H']}_rho{point['rho']:g}"
             f"_{point['integration']}")
@@ -61,6 +65,8 @@ def point_name(point: dict) -> str:
         name += f"_seed{point['seed']}"
     if point.get("dt_times_cs", IMPLICIT["dt_times_cs"]) != IMPLICIT["dt_times_cs"]:
         name += f"_dt{point['dt_times_cs']:g}"
+    if point.get(CONTRAST) is not None:
+        name += f"_Es{point[CONTRAST]:g}"
     return name
 
 
@@ -68,6 +74,8 @@ def _csv_value(key: str, text: str):
     """A CSV cell as the point parameter's type; ValueError when it does not spell one."""
     if key == "integration":
         return text
+    if key == CONTRAST and text.strip() in ("", "null", "None"):
+        return None  # the rigid flat
     return int(text) if key in ("elements_per_H", "seed") else float(text)
 
 
@@ -138,10 +146,14 @@ def sweep_points(config: dict, sweep: str, root: Path | str = ".") -> dict[str, 
 
 
 def matches(point: dict, match: dict) -> bool:
-    """True when every key of `match` equals the point's value (floats to 1e-9 relative)."""
+    """True when every key of `match` equals the point's value (floats to 1e-9 relative; None, the
+    rigid flat's contrast, equals only None or an absent key)."""
     for key, wanted in match.items():
-        value = point[key]
-        if isinstance(wanted, str) or isinstance(value, str):
+        value = point.get(key) if key == CONTRAST else point[key]
+        if wanted is None or value is None:
+            if wanted is not value:
+                return False
+        elif isinstance(wanted, str) or isinstance(value, str):
             if value != wanted:
                 return False
         elif not math.isclose(value, wanted, rel_tol=1e-9, abs_tol=1e-12):
@@ -172,10 +184,13 @@ def label(point: dict, keys: list[str]) -> str:
     """Short legend text, e.g. 'V0/c_s=1e-05' or 'nu=0.20 f=1.50'."""
     symbols = {"nu": "nu", "f": "f", "V0_over_cs": "V0/c_s", "lambda_over_H": "lambda/H",
                "elements_per_H": "H/h", "rho": "rho", "integration": "", "seed": "seed",
-               "dt_times_cs": "dt c_s"}
+               "dt_times_cs": "dt c_s", CONTRAST: "E_s/E"}
     parts = []
     for key in keys:
-        value = point[key]
+        value = point.get(key)
+        if key == CONTRAST and value is None:
+            parts.append("rigid flat")
+            continue
         text = _decimal(value) if key in ("nu", "f") else (value if isinstance(value, str) else f"{value:g}")
         parts.append(f"{symbols[key]}={text}" if symbols[key] else str(text))
     return " ".join(parts) if parts else point_name(point)

@@ -30,7 +30,7 @@ from analysis.theory import elastic, flutter
 
 #: Version of the measurement definitions, written into every metrics file (analysis/README.md
 #: says what each version changed).
-ANALYSIS_VERSION = "5"
+ANALYSIS_VERSION = "6"
 
 
 def _fronts_at(tracks: list[EdgeTrack], time: float) -> np.ndarray:
@@ -87,6 +87,19 @@ def _validity(m: Measured) -> dict[str, Any]:
 @family("parameters", tuple(PARAMETERS) + ("dt", "dt_times_cs", "t_end"))
 def _run_parameters(m: Measured) -> dict[str, Any]:
     return m.parameters
+
+
+@family("substrate", ("E_substrate_over_E", "substrate_nu", "substrate_rho_over_rho", "substrate_H_over_H"))
+def _substrate(m: Measured) -> dict[str, Any]:
+    """The deformable substrate against the layer (docs/substrate.md), from the resolved config; None on
+    the rigid flat (no `substrate` group), so that tables group runs by contrast."""
+    substrate = m.run.config.get("substrate")
+    if not isinstance(substrate, dict) or substrate.get("E") is None:
+        return dict.fromkeys(("E_substrate_over_E", "substrate_nu", "substrate_rho_over_rho", "substrate_H_over_H"))
+    layer = m.parameters
+    return {"E_substrate_over_E": substrate["E"] / layer["E"], "substrate_nu": substrate["nu"],
+            "substrate_rho_over_rho": substrate["rho"] / layer["rho"],
+            "substrate_H_over_H": substrate["H"] / layer["H"]}
 
 
 @family("constants and settings", ("c_s", "c_l", "sqrt2_c_s", "p0", "V0", "lambda", "dx", "output_interval",

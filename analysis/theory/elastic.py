@@ -1,4 +1,5 @@
-"""Closed-form quantities of the model: wave speeds, preload, time step, onset time, pulse spacing.
+"""Closed-form quantities of the model: wave speeds, preload, time step, onset time (on the rigid flat
+and on a deformable substrate), pulse spacing.
 
 Plane strain, linear isotropic elasticity (Young's modulus E, Poisson's ratio nu, density rho);
 the paper is Yastrebov 2016 (Tribol. Lett. 62:1). The flutter boundary lives in `analysis.theory.flutter`.
@@ -78,6 +79,37 @@ def onset_time_estimate(*, f: float, preshear_ratio: float, p0: float, H: float,
     """
     delta_u = (1.0 - preshear_ratio) * f * p0 * H / shear_modulus(E, nu)
     return delta_u / V0
+
+
+def p_wave_modulus(E: float, nu: float) -> float:
+    """Plane-strain (uniaxial strain) modulus M = E (1 - nu) / ((1 + nu)(1 - 2 nu)) (Pa)."""
+    return E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))
+
+
+def pair_onset_time_estimate(*, f: float, preshear_ratio: float, Uy: float, H: float, E: float, nu: float,
+                             V0: float, H_s: float, E_s: float, nu_s: float) -> tuple[float, float]:
+    """(t_onset (s), p0 (Pa)) of a layer (H, E, nu) on a deformable substrate (H_s, E_s, nu_s) whose
+    bottom is held (docs/substrate.md): the quasi-static onset of `onset_time_estimate` for the pair.
+
+    Both bodies are loaded in series through the interface, each in uniform strain. Stage 1: the top's
+    displacement Uy (< 0) is shared by the two uniaxial strains under one pressure p0,
+
+        -Uy = p0 (H / M + H_s / M_s)   ->   p0 = -Uy / (H / M + H_s / M_s),   M = p_wave_modulus;
+
+    stage 3: the interface shear stress tau is shared by the two shear strains, so the top moves
+    tau (H / G + H_s / G_s) to carry it, and T/N grows from preshear_ratio f to f after
+
+        t_onset = (1 - preshear_ratio) f p0 (H / G + H_s / G_s) / V0.
+
+    Against the rigid flat (H_s / M_s = H_s / G_s = 0) the pressure drops by 1 + (H_s M) / (H M_s) and
+    the displacement per unit stress grows by 1 + (H_s G) / (H G_s); with the layer's nu and thickness
+    (the study's contrast sweep) the two factors are equal, 1 + E / E_s, and t_onset is the rigid
+    flat's (p0 is lower by that factor).
+    """
+    normal = H / p_wave_modulus(E, nu) + H_s / p_wave_modulus(E_s, nu_s)
+    shear = H / shear_modulus(E, nu) + H_s / shear_modulus(E_s, nu_s)
+    p0 = -Uy / normal
+    return (1.0 - preshear_ratio) * f * p0 * shear / V0, p0
 
 
 def pulse_spacing(c_p: float, c_s: float, H: float) -> float:

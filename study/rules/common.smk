@@ -182,13 +182,16 @@ def table_select(pts, highlight=None):
     study default (e.g. the shear-rate sweep's table is the V0/c_s = 1e-5 run)."""
     keys = [k for k in study_sweeps.varying_keys(pts) if k not in ("nu", "f")]
     wanted = {**config["defaults"], **(highlight or {})}
-    return [word for k in keys for word in ("--select", f"{k}={wanted[k]}")]
+    # No default contrast: the rigid flat, whose runs' metrics carry E_substrate_over_E = None.
+    return [word for k in keys for word in ("--select", f"{k}={wanted.get(k)}")]
 
 
 def has_default_run_settings(sweep):
-    """True when a sweep runs its points with the study-wide run length, solver keys and no snapshots."""
+    """True when a sweep runs its points with the study-wide run length, solver keys and no snapshots, on
+    the rigid flat (a sweep with a substrate contrast, `contrast`, is beyond the paper: not in its table)."""
     spec = sweep_spec(sweep)
-    return (not spec.get("snapshot_offsets_transits") and not spec.get("solver")
+    on_rigid_flat = all(p.get(study_sweeps.CONTRAST) is None for p in points(sweep).values())
+    return (on_rigid_flat and not spec.get("snapshot_offsets_transits") and not spec.get("solver")
             and all(spec.get("run_length", {}).get(k, v) == v for k, v in config["run_length"].items()))
 
 

@@ -1,6 +1,7 @@
 # One new point in one command, without editing study/config.yaml:
 #
 #   snakemake -c2 explore --config 'point={nu: 0.25, f: 1.6}'
+#   snakemake -c2 explore --config 'point={nu: 0.45, f: 1.5, E_substrate_over_E: 3, elements_per_H: 32}'
 #
 # The point (checked by the schema's `point`: key names and ranges) takes every other parameter from
 # `defaults` (the study's default mesh and shear rate). It becomes the sweep `explore`, so the usual
@@ -28,7 +29,7 @@ def explore_point_name():
     if EXPLORE not in config["sweeps"]:
         raise WorkflowError("snakemake explore needs the point: --config 'point={nu: 0.25, f: 1.6}' "
                             "(keys nu, f, V0_over_cs, lambda_over_H, elements_per_H, rho, integration, seed, "
-                            "dt_times_cs; the rest from `defaults` in study/config.yaml)")
+                            "dt_times_cs, E_substrate_over_E; the rest from `defaults` in study/config.yaml)")
     (name,) = points(EXPLORE)
     return name
 

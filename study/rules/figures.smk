@@ -80,6 +80,19 @@ rule fig_phase_diagram:
         " --out {params.prefix:q} > {log:q} 2>&1"
 
 
+rule fig_contrast_phase_diagram:
+    """Beyond the paper: the category of each (contrast, f) per nu, over the bimaterial theory's unstable ranges."""
+    input:
+        script=figure_script("contrast_phase_diagram"),
+        metrics="results/{sweep}/table/all_metrics.csv",
+        theory="results/{sweep}/theory/contrast_theory.csv",
+    output: multiext("results/{sweep}/figures/contrast_phase_diagram", *FIGURE_EXTS)
+    params: prefix="results/{sweep}/figures/contrast_phase_diagram"
+    log: "results/{sweep}/logs/fig_contrast_phase_diagram.log"
+    shell:
+        "{PYTHON:q} {input.script:q} {input.metrics:q} --theory {input.theory:q} --out {params.prefix:q} > {log:q} 2>&1"
+
+
 rule fig_celerity_vs_nu:
     """Fig. 4b: slip-front celerity against nu per f, with c_s, sqrt(2) c_s and c_l."""
     input:

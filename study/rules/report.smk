@@ -3,7 +3,7 @@
 REPORT_SCRIPT = repo_path("study/scripts/report.py")
 
 localrules: sweep_report, report, paper_figure, paper_numbers, paper_table, paper, energy_evidence_config,
-    paper_energy_evidence, paper_claims, energy_evidence
+    paper_energy_evidence, paper_claims, energy_evidence, paper_contrast
 
 
 def report_inputs(sweeps):
@@ -185,6 +185,23 @@ rule paper_claims:
         " > {log:q} 2>&1"
 
 
+CONTRAST_FILES = ["paper/generated/contrast_text.tex", "paper/generated/contrast_table.tex"]
+
+
+rule paper_contrast:
+    """"Beyond the paper: a deformable substrate": its sentences and table from the contrast sweep's runs and
+    the bimaterial theory at its points (paper/make_contrast.py), config `paper.contrast`."""
+    input:
+        script=repo_path("paper/make_contrast.py"),
+        metrics=lambda wc: f"results/{config['paper']['contrast']['sweep']}/table/all_metrics.csv",
+        theory=lambda wc: f"results/{config['paper']['contrast']['sweep']}/theory/contrast_theory.csv",
+    output: CONTRAST_FILES
+    log: "logs/paper_contrast.log"
+    shell:
+        "{PYTHON:q} {input.script:q} {input.metrics:q} --theory {input.theory:q} --text {output[0]:q}"
+        " --table {output[1]:q} > {log:q} 2>&1"
+
+
 ENERGY_RUNS = ("alpha_zero", "alpha", "alpha_end")  # the options of `analysis energy-evidence`
 
 
@@ -287,6 +304,7 @@ rule paper:
         tables=expand("paper/generated/{name}.tex", name=config["paper"]["tables"]),
         how_sure=HOW_SURE_FILES if config["paper"].get("envelope") else [],  # study/rules/ensemble.smk
         how_sure_limits=HOW_SURE_LIMITS_FILES if config["paper"].get("limits") else [],  # study/rules/limits.smk
+        contrast=CONTRAST_FILES if config["paper"].get("contrast") else [],
     output: PAPER_PDF
     log: "logs/paper.log"
     shell:

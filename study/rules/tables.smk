@@ -128,3 +128,26 @@ rule flutter:
     params: nu=[f"{nu:.6g}" for nu in flutter_nu()]
     log: "results/theory/logs/flutter.log"
     shell: "{PYTHON:q} -m analysis flutter-boundary --nu {params.nu:q} > {output:q} 2> {log:q}"
+
+
+def contrast_theory_points(sweep):
+    """[--point NU CONTRAST F ...] of a sweep's distinct (nu, contrast, f); 'rigid' for the rigid flat."""
+    cells = []
+    for p in points(sweep).values():
+        contrast = p.get(study_sweeps.CONTRAST)
+        cell = (p["nu"], "rigid" if contrast is None else repr(float(contrast)), p["f"])
+        if cell not in cells:
+            cells.append(cell)
+    return [word for nu, contrast, f in cells for word in ("--point", repr(nu), contrast, repr(f))]
+
+
+rule contrast_theory:
+    """The bimaterial theory at a contrast sweep's points (analysis/theory/contrast_theory.py): the onset f
+    of each family of growing modes and the most unstable mode; ~2 min of CPU for `contrast` (a threshold of the
+    near-rigid substrate takes ~30 s)."""
+    output: "results/{sweep}/theory/contrast_theory.csv"
+    params:
+        points=lambda wc: contrast_theory_points(wc.sweep),
+        E=config["model"]["E"],
+    log: "results/{sweep}/logs/contrast_theory.log"
+    shell: "{PYTHON:q} -m analysis contrast-theory {params.points:q} --E {params.E:q} -o {output:q} > {log:q} 2>&1"

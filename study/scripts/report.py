@@ -66,6 +66,8 @@ CAPTIONS = {
     "tn_aligned": "T/N against the time since the start of each run's first frictional drop (x: the run stopped during the drop)",
     "pulse_spacing": "Number and spacing of the major slip pulses against lambda/H, with the Mach-wave spacing",
     "convergence": "Celerity, minimum T/N and maximum opening against the swept parameter",
+    "contrast_phase_diagram": "Categories of the runs over (material contrast E_s/E, f) per nu, with c_p/c_s, over the "
+                              "unstable ranges of steady sliding from the bimaterial theory",
 }
 
 CSS = """

@@ -26,6 +26,8 @@ POINT_KEYS = {
     "nu": "material.nu", "f": "friction.f", "V0_over_cs": "loading.V0_over_cs",
     "lambda_over_H": "geometry.lambda_over_H", "elements_per_H": "mesh.elements_per_H", "rho": "material.rho",
     "integration": "mesh.integration", "seed": "perturbation.seed", "dt_times_cs": "time.dt_times_cs",
+    # E_substrate / E: substrate.E = E_substrate_over_E E (study/make_run_config.py); a positive ratio, like the key.
+    "E_substrate_over_E": "substrate.E",
 }
 MODEL_KEYS = {"E": "material.E", "H": "geometry.H", "Uy_over_H": "loading.Uy_over_H",
               "preshear_ratio": "loading.preshear_ratio"}

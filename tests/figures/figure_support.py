@@ -53,6 +53,8 @@ def report_jobs(data):
         "regularized_between_h128": ("spacetime", data / "run.h5", "--field", "state"),
         "regularized_mid_h128": ("spacetime", data / "run_v1e-06.h5", "--field", "slip_velocity"),
         "regularized_slow_h128": ("spacetime", data / "run_v0.0001.h5", "--field", "slip_velocity"),
+        "contrast_phase_diagram": ("contrast_phase_diagram", data / "contrast_metrics.csv", "--theory",
+                                   data / "contrast_theory.csv"),
     }
     return jobs
 

@@ -1,5 +1,6 @@
 """Small synthetic inputs that follow docs/contracts.md: a run.h5 with interface fields, global
-series and snapshots; all_metrics.csv, table1.csv, flutter.txt, metrics.json, summary.json.
+series and snapshots; all_metrics.csv, table1.csv, flutter.txt, metrics.json, summary.json, and a
+tiny contrast sweep (contrast_inputs.py).
 
 The fields look like the paper's nu=0.2, f=1.5 case (a pulse at c_p = 0.85 m/s that opens the
 interface and drops T/N below zero) so that the figures made from them can be judged by eye.
@@ -17,6 +18,7 @@ from analysis.metrics import pulses
 from analysis.tables import aggregate
 from analysis.tables.reference import ReferenceCell
 from analysis.theory import elastic, flutter
+from contrast_inputs import write_contrast
 from synthetic_run import write_run_file
 
 E, RHO, H = 1000.0, 1000.0, 25.0
@@ -299,6 +301,7 @@ def write_all(folder):
     for name, (alpha, weighting) in ENERGY_RUNS.items():
         write_energy_run(folder / f"energy_{name}.h5", alpha, weighting)
     (folder / "flutter.txt").write_text(FLUTTER)
+    write_contrast(folder)
     for name, start, complete in (("v1e-06", 1000.0, 1), ("", 950.0, 1), ("v0.0001", 900.0, 0)):
         (folder / f"metrics{'_' + name if name else ''}_drop.json").write_text(json.dumps(
             {"first_drop_start_time": start, "n_complete_drops": complete}))

@@ -187,6 +187,8 @@ def test_report_builds_with_every_figure(data, rendered, tmp_path):
                    f"--table=table1={data / 'table1.csv'}", f"--table=grid={data / 'all_metrics.csv'}",
                    "-o", gen / "claims.tex", "--conclusions", gen / "conclusions.tex",
                    "--json", gen / "claims.json").returncode == 0
+    assert command(PAPER / "make_contrast.py", data / "contrast_metrics.csv", "--theory", data / "contrast_theory.csv",
+                   "--text", gen / "contrast_text.tex", "--table", gen / "contrast_table.tex").returncode == 0
     write_generated(write_tables(tmp_path), gen)  # paper/how_sure.tex's inputs (tests/figures/how_sure_inputs.py)
     write_generated_limits(write_limits(tmp_path / "limits"), gen)  # its limits subsections (how_sure_limits_inputs.py)
     build(paper)
