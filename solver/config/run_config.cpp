@@ -164,6 +164,16 @@ DerivedConstants RunConfig::derived() const {
   d.dt = time.dt ? *time.dt : time.dt_times_cs / d.c_s;
   // Uniform stick state: tau = G u_top / H, so T/N grows by (1 - ratio) f over du = (1-ratio) f p0 H / G.
   d.t_onset_estimate = (1 - loading.preshear_ratio) * friction.f * d.p0 * d.H / (d.G * d.V0);
+  if (substrate.present()) {
+    // Both bodies in series under the same uniaxial strain state: the top's Uy H compresses the layer by
+    // H / M and the substrate by H_s / M_s per unit pressure (M the P-wave modulus), and the shear traction
+    // strains both, so the top moves H / G + H_s / G_s per unit traction (docs/substrate.md).
+    const double E_s = *substrate.E, nu_s = *substrate.nu, H_s = *substrate.H;
+    const double M = d.lame_lambda + 2 * d.G, M_s = E_s * (1 - nu_s) / ((1 + nu_s) * (1 - 2 * nu_s));
+    d.p0 = -loading.Uy_over_H * d.H / (d.H / M + H_s / M_s);
+    const double shear_compliance = d.H / d.G + H_s / (E_s / (2 * (1 + nu_s)));
+    d.t_onset_estimate = (1 - loading.preshear_ratio) * friction.f * d.p0 * shear_compliance / d.V0;
+  }
   d.n_steps = std::ceil(time.t_end / d.dt - 1e-9);
   return d;
 }

@@ -91,7 +91,8 @@ struct DerivedConstants {
   double G, lame_lambda, c_s, c_l;
   double H, lambda, h;
   int n_x, n_y;  ///< elements along x (period) and y (height)
-  double p0;     ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive)
+  double p0;     ///< preload pressure -Uy E(1-nu)/(H(1+nu)(1-2nu)) (Pa, compression positive); with a
+                 ///< substrate, the pair's: -Uy / (H / M + H_s / M_s)
   double V0, dt;
   double t_onset_estimate;  ///< quasi-static time for T/N to reach f from preshear_ratio*f (s)
   /// Stage-3 steps the time loop runs at most, ceil(t_end / dt - 1e-9): a double, so that an absurd

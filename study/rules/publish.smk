@@ -34,12 +34,15 @@ SWEEP_TABLES = ("table1.csv", "summary.json", "all_metrics.csv")
 ENSEMBLE_PUBLISHED = ("ensemble.csv", "ensemble_summary.json")
 LIMITS_PUBLISHED = ("mesh_limit.csv", "mesh_limit_summary.json", "timestep_limit.csv", "timestep_cells.csv",
                     "timestep_limit_summary.json", "pulse_seeds.csv", "pulse_seeds_summary.json")
-# Made from the runs, not from the sweep tables: committed with their renderings, and restored as they are
-# when the report is built from the committed tables.
+# Made from the runs, not from the sweep tables (or, the contrast theory, by minutes of root finding): committed
+# with their renderings, and restored as they are when the report is built from the committed tables.
+CONTRAST_SWEEP = config["paper"].get("contrast", {}).get("sweep")
 FROM_RUNS_PUBLISHED = {
     **{f"limits/{name}": f"results/limits/{name}" for name in TIMELINE_TABLES},
     **{f"{RULE_SCORES_SWEEP}/{Path(path).name}": path for path in RULE_SCORES},
     "energy_evidence/energy_evidence.json": "results/energy_evidence/energy_evidence.json",
+    **({f"{CONTRAST_SWEEP}/contrast_theory.csv": f"results/{CONTRAST_SWEEP}/theory/contrast_theory.csv"}
+       if CONTRAST_SWEEP else {}),
 }
 
 
@@ -110,3 +113,4 @@ else:
     ruleorder: restore_committed > timeline
     ruleorder: restore_committed > rule_scores
     ruleorder: restore_committed > energy_evidence
+    ruleorder: restore_committed > contrast_theory

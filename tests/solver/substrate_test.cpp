@@ -83,6 +83,9 @@ TEST(Substrate, PreloadOfThePairSticksAtThePreshearRatio) {
   const LayerModel m(c);
   const PreloadState pre = solve_preload(m);
   EXPECT_NEAR(pre.T / pre.N, 0.95 * c.friction.f, 1e-9);
+  // The pair's preload pressure (RunConfig::derived): identical bodies in series, half the rigid flat's.
+  EXPECT_NEAR(pre.N, m.d.p0 * m.d.lambda, 1e-9 * pre.N);
+  EXPECT_NEAR(m.d.p0, 0.5 * testing::make_config({{"mesh", {{"elements_per_H", 8}}}}).derived().p0, 1e-12 * m.d.p0);
   ASSERT_EQ(pre.u_substrate.size(), m.substrate->n_free + m.substrate->n_top);
   const Eigen::VectorXd rel = relative_contact_displacement(pre.u, pre.u_substrate, m.n_contact_dofs);
   for (int k = 0; k < m.mesh.n_contact(); ++k) EXPECT_NEAR(rel(2 * k + 1), 0.0, 1e-12 * m.d.H) << k;
@@ -93,6 +96,19 @@ TEST(Substrate, PreloadOfThePairSticksAtThePreshearRatio) {
     EXPECT_NEAR(pre.u(2 * k + 1), half, 1e-9 * std::fabs(half)) << k;
     EXPECT_NEAR(pre.u_substrate(2 * k + 1), -half, 1e-9 * std::fabs(half)) << k;
   }
+}
+
+// Dissimilar bodies (E_s = 3 E, nu_s = 0.45, H_s = H / 2): the preload's normal force is the pressure of
+// both bodies in series under uniaxial strain, -Uy / (H / M + H_s / M_s), which /setup writes as p0.
+TEST(Substrate, PreloadPressureIsThatOfBothBodiesInSeries) {
+  const RunConfig c =
+      testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"substrate", substrate(3e3, 0.45, 1e3, 12.5)}});
+  const LayerModel m(c);
+  const PreloadState pre = solve_preload(m);
+  const double M = m.d.lame_lambda + 2 * m.d.G, M_s = 3e3 * 0.55 / (1.45 * 0.1);
+  const double p0 = -c.loading.Uy_over_H * c.geometry.H / (c.geometry.H / M + 12.5 / M_s);
+  EXPECT_NEAR(m.d.p0, p0, 1e-12 * p0);
+  EXPECT_NEAR(pre.N, p0 * m.d.lambda, 1e-9 * pre.N);
 }
 
 struct StiffComparison {
