@@ -2,10 +2,11 @@
 the names of the runs the study already has did not change (a changed name reruns a run)."""
 
 import csv
+import re
 
 import pytest
 
-from study import sweeps
+from study import run_store, sweeps
 
 from .conftest import REPO
 
@@ -43,7 +44,10 @@ def test_any_point_key_can_be_a_grid_list(study_config):
 @pytest.mark.parametrize("sweep", sorted(p.name for p in PUBLISHED.iterdir()
                                          if (p / "all_metrics.csv").exists() and p.name != "study"))
 def test_published_runs_keep_their_names(study_config, sweep):
-    """Every run of study/results/<sweep>/all_metrics.csv is still a point of that sweep, by name."""
+    """Every run of study/results/<sweep>/all_metrics.csv is still a point of that sweep, by name: its folder
+    results/runs/<point>-<digest of its config.json> (study/run_store.py) names the point."""
     with open(PUBLISHED / sweep / "all_metrics.csv", newline="") as stream:
-        published = {row["metrics_file"].split("/")[-2] for row in csv.DictReader(stream)}
+        folders = [row["metrics_file"].split("/")[-2] for row in csv.DictReader(stream)]
+    assert all(re.fullmatch(run_store.RUN_ID_PATTERN, folder) for folder in folders), folders
+    published = {folder.rsplit("-", 1)[0] for folder in folders}
     assert published == set(sweeps.sweep_points(study_config, sweep, REPO))
