@@ -1,0 +1,113 @@
+#include "model/stick_phase/banded_lanes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace slidewave {
+
+BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
+    : rows(n_rows),
+      p(half_bandwidth),
+      lanes(n_lanes),
+      re(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0),
+      im(re.size(), 0.0) {}
+
+void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end) const {
+  for (int r = r0; r < r1; ++r) {
+    double* __restrict y_re = y.re.data() + y.at(r, 0);
+    double* __restrict y_im = y.im.data() + y.at(r, 0);
+    std::fill_n(y_re, m_end, 0.0);
+    std::fill_n(y_im, m_end, 0.0);
+    for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
+      const double* a_re = re.data() + at(r, k, 0);
+      const double* a_im = im.data() + at(r, k, 0);
+      const double* x_re = x.re.data() + x.at(r + k, 0);
+      const double* x_im = x.im.data() + x.at(r + k, 0);
+      for (int m = 0; m < m_end; ++m) {
+        y_re[m] += a_re[m] * x_re[m] - a_im[m] * x_im[m];
+        y_im[m] += a_re[m] * x_im[m] + a_im[m] * x_re[m];
+      }
+    }
+  }
+}
+
+BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
+    : first_(first), n_(A.rows - first), p_(A.p), lanes_(A.lanes) {
+  using Complex = std::complex<double>;
+  const int n = n_, p = p_;
+  L_re_.assign(static_cast<std::size_t>(n) * std::max(p, 1) * lanes_, 0.0);
+  L_im_.assign(L_re_.size(), 0.0);
+  inv_D_.assign(static_cast<std::size_t>(n) * lanes_, 0.0);
+  std::vector<Complex> band(static_cast<std::size_t>(n) * (p + 1));
+  const auto entry = [&band, p](int r, int c) -> Complex& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
+  std::vector<double> D(n);
+  for (int m = 0; m < lanes_; ++m) {
+    for (int r = 0; r < n; ++r)
+      for (int c = std::max(0, r - p); c <= r; ++c) entry(r, c) = A.get(first + r, c - r, m);
+    for (int r = 0; r < n; ++r) {
+      const int lowest = std::max(0, r - p);
+      for (int c = lowest; c < r; ++c) {
+        Complex v = entry(r, c);
+        for (int q = lowest; q < c; ++q) v -= entry(r, q) * D[q] * std::conj(entry(c, q));
+        entry(r, c) = v / D[c];
+      }
+      double d = entry(r, r).real();
+      for (int q = lowest; q < r; ++q) d -= std::norm(entry(r, q)) * D[q];
+      if (!(d > 0) || !std::isfinite(d)) {
+        std::ostringstream msg;
+        msg << "BandedLaneFactor: lane " << m << " is not positive definite (pivot " << r << " = " << d << ")";
+        throw std::runtime_error(msg.str());
+      }
+      D[r] = d;
+      inv_D_[static_cast<std::size_t>(r) * lanes_ + m] = 1.0 / d;
+      for (int k = 1; k <= p && k <= r; ++k) {
+        const std::size_t at = (static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m;
+        L_re_[at] = entry(r, r - k).real();
+        L_im_[at] = entry(r, r - k).imag();
+      }
+    }
+  }
+}
+
+void BandedLaneFactor::solve(LaneVectors& x, int m_end) const {
+  const int p = p_, lanes = lanes_;
+  double* y_re = x.re.data() + x.at(first_, 0);
+  double* y_im = x.im.data() + x.at(first_, 0);
+  for (int r = 0; r < n_; ++r) {  // L y = b
+    double* __restrict out_re = y_re + static_cast<std::size_t>(r) * lanes;
+    double* __restrict out_im = y_im + static_cast<std::size_t>(r) * lanes;
+    for (int k = 1; k <= p && k <= r; ++k) {
+      const double* l_re = L_re_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
+      const double* l_im = L_im_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
+      const double* b_re = out_re - static_cast<std::size_t>(k) * lanes;
+      const double* b_im = out_im - static_cast<std::size_t>(k) * lanes;
+      for (int m = 0; m < m_end; ++m) {
+        out_re[m] -= l_re[m] * b_re[m] - l_im[m] * b_im[m];
+        out_im[m] -= l_re[m] * b_im[m] + l_im[m] * b_re[m];
+      }
+    }
+  }
+  for (int r = n_ - 1; r >= 0; --r) {  // x = D^-1 y - L^H x
+    double* __restrict out_re = y_re + static_cast<std::size_t>(r) * lanes;
+    double* __restrict out_im = y_im + static_cast<std::size_t>(r) * lanes;
+    const double* d = inv_D_.data() + static_cast<std::size_t>(r) * lanes;
+    for (int m = 0; m < m_end; ++m) {
+      out_re[m] *= d[m];
+      out_im[m] *= d[m];
+    }
+    for (int k = 1; k <= p && r + k < n_; ++k) {
+      const double* l_re = L_re_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
+      const double* l_im = L_im_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
+      const double* x_re = out_re + static_cast<std::size_t>(k) * lanes;
+      const double* x_im = out_im + static_cast<std::size_t>(k) * lanes;
+      for (int m = 0; m < m_end; ++m) {
+        out_re[m] -= l_re[m] * x_re[m] + l_im[m] * x_im[m];
+        out_im[m] -= l_re[m] * x_im[m] - l_im[m] * x_re[m];
+      }
+    }
+  }
+}
+
+}  // namespace slidewave
