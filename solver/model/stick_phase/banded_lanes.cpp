@@ -14,23 +14,59 @@ BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
       re(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0),
       im(re.size(), 0.0) {}
 
-void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end) const {
+void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate,
+                           double scale) const {
+  std::vector<double> sum_re(m_end), sum_im(m_end);
   for (int r = r0; r < r1; ++r) {
-    double* __restrict y_re = y.re.data() + y.at(r, 0);
-    double* __restrict y_im = y.im.data() + y.at(r, 0);
-    std::fill_n(y_re, m_end, 0.0);
-    std::fill_n(y_im, m_end, 0.0);
+    double* __restrict s_re = sum_re.data();
+    double* __restrict s_im = sum_im.data();
+    std::fill_n(s_re, m_end, 0.0);
+    std::fill_n(s_im, m_end, 0.0);
     for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
       const double* a_re = re.data() + at(r, k, 0);
       const double* a_im = im.data() + at(r, k, 0);
       const double* x_re = x.re.data() + x.at(r + k, 0);
       const double* x_im = x.im.data() + x.at(r + k, 0);
       for (int m = 0; m < m_end; ++m) {
-        y_re[m] += a_re[m] * x_re[m] - a_im[m] * x_im[m];
-        y_im[m] += a_re[m] * x_im[m] + a_im[m] * x_re[m];
+        s_re[m] += a_re[m] * x_re[m] - a_im[m] * x_im[m];
+        s_im[m] += a_re[m] * x_im[m] + a_im[m] * x_re[m];
+      }
+    }
+    double* __restrict y_re = y.re.data() + y.at(r, 0);
+    double* __restrict y_im = y.im.data() + y.at(r, 0);
+    if (accumulate)
+      for (int m = 0; m < m_end; ++m) {
+        y_re[m] += scale * s_re[m];
+        y_im[m] += scale * s_im[m];
+      }
+    else
+      for (int m = 0; m < m_end; ++m) {
+        y_re[m] = s_re[m];
+        y_im[m] = s_im[m];
+      }
+  }
+}
+
+double BandedLanes::bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const {
+  std::vector<double> per_lane(m_end, 0.0);
+  double* __restrict sum = per_lane.data();
+  for (int r = 0; r < rows; ++r) {
+    const double* xr_re = x.re.data() + x.at(r, 0);
+    const double* xr_im = x.im.data() + x.at(r, 0);
+    for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
+      const double* a_re = re.data() + at(r, k, 0);
+      const double* a_im = im.data() + at(r, k, 0);
+      const double* y_re = y.re.data() + y.at(r + k, 0);
+      const double* y_im = y.im.data() + y.at(r + k, 0);
+      for (int m = 0; m < m_end; ++m) {  // Re(conj(x) (a y))
+        const double ay_re = a_re[m] * y_re[m] - a_im[m] * y_im[m], ay_im = a_re[m] * y_im[m] + a_im[m] * y_re[m];
+        sum[m] += xr_re[m] * ay_re + xr_im[m] * ay_im;
       }
     }
   }
+  double total = 0;
+  for (int m = 0; m < m_end; ++m) total += weight[m] * sum[m];
+  return total;
 }
 
 BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)

@@ -1,7 +1,6 @@
 #include "model/stick_phase/stick_phase.hpp"
 
 #include <cmath>
-#include <utility>
 
 namespace slidewave {
 
@@ -69,10 +68,9 @@ void StickPhase::reconstruct(LoopState& loop) const {
   s.acc = Eigen::VectorXd::Zero(n_f + n_t);
   transform_.inverse(x.A, n_y, s.acc.data());
   s.Ku = layer_.K * s.u;
-  for (auto [to, from] : {std::pair{&s.Mu_f, &x.MU}, {&s.Mv_f, &x.MV}, {&s.Ma_f, &x.MA}}) {
-    to->resize(n_f);
-    transform_.inverse(*from, n_y, to->data());
-  }
+  s.Mu_f = layer_.M_ff_rows * s.u.head(n_f);
+  s.Mv_f = layer_.M_ff_rows * s.v.head(n_f);
+  s.Ma_f = layer_.M_ff_rows * s.acc.head(n_f);
   s.r = r_;
   loop.energy = sums_;
   loop.energy.F_top = s.Ku.tail(n_t) + layer_.M_top_rows * s.acc;

@@ -10,6 +10,18 @@ Eigen::VectorXd lane_zero(const LaneVectors& X) {
   return x;
 }
 
+/// x + c y on lanes [0, n).
+LaneVectors combine(const LaneVectors& x, const LaneVectors& y, double c, int n) {
+  LaneVectors z(x.rows, x.lanes);
+  for (int r = 0; r < x.rows; ++r)
+    for (int m = 0; m < n; ++m) {
+      const std::size_t e = x.at(r, m);
+      z.re[e] = x.re[e] + c * y.re[e];
+      z.im[e] = x.im[e] + c * y.im[e];
+    }
+  return z;
+}
+
 }  // namespace
 
 StickPhaseLedger::StickPhaseLedger(const WavenumberBlocks& blocks, const HHTCoefficients& hht, double V0)
@@ -40,7 +52,8 @@ double StickPhaseLedger::dot(const LaneVectors& X, const LaneVectors* X2, double
 }
 
 double StickPhaseLedger::kinetic(const ModeState& x, int n_active) const {
-  return 0.5 * (dot(x.V, nullptr, 0, x.MV, nullptr, 0, n_active) + 2 * M_fd_v_top_.dot(lane_zero(x.V)) + kinetic_top_);
+  return 0.5 * (blocks_.M.bilinear(x.V, x.V, n_active, blocks_.weight.data()) + 2 * M_fd_v_top_.dot(lane_zero(x.V)) +
+                kinetic_top_);
 }
 
 double StickPhaseLedger::elastic(const ModeState& x, int n_active, double retired_elastic,
@@ -67,9 +80,12 @@ void StickPhaseLedger::book_step(const ModeState& before, const ModeState& after
   if (!sums.hht.on()) return;
   // The three HHT terms of EnergyLedger::book_hht_terms, each a quadratic form of the two states.
   const double dt = hht_.dt;
-  const double v_M_da = 0.5 * dot(before.V, &after.V, 1, after.MA, &before.MA, -1, n_active) +
+  const LaneVectors v_sum = combine(before.V, after.V, 1, n_active), a_change = combine(after.A, before.A, -1, n_active),
+                    a_sum = combine(before.A, after.A, 1, n_active);
+  const double* w = blocks_.weight.data();
+  const double v_M_da = 0.5 * blocks_.M.bilinear(v_sum, a_change, n_active, w) +
                         M_fd_v_top_.dot(lane_zero(after.A) - lane_zero(before.A));
-  const double da_M_a = 0.5 * dot(after.A, &before.A, -1, before.MA, &after.MA, 1, n_active);
+  const double da_M_a = 0.5 * blocks_.M.bilinear(a_change, a_sum, n_active, w);
   const double du_s = 0.5 * dot(after.U, &before.U, -1, before.S, &after.S, 1, n_active);
   sums.hht.gamma -= dt * (hht_.gamma - 0.5) * v_M_da;
   sums.hht.beta += dt * dt * (hht_.beta - 0.5 * hht_.gamma) * da_M_a;
