@@ -39,6 +39,8 @@ class StickPhase {
   int n_active() const { return stepper_.n_active(); }
   /// The reactions of the current step (2 per contact node), as the all-stick solution gives them.
   const Eigen::VectorXd& reactions() const { return r_; }
+  /// The contact displacements of the current step (2 per contact node; the interface rows need them).
+  const Eigen::VectorXd& contact_displacement() const { return u_contact_; }
   /// The reactions the last failed step() found (the trial solution that left a bound).
   const Eigen::VectorXd& trial_reactions() const { return r_trial_; }
   double kinetic() const;

@@ -137,12 +137,15 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       const double* v = (part ? x.V.im : x.V.re).data() + e;
       const double* acc = (part ? x.A.im : x.A.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
       double* __restrict ut = (part ? U_tilde_.im : U_tilde_.re).data() + e;
       double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
       for (int m = 0; m < me; ++m) {
         ut[m] = u[m] + dt * v[m] + c2 * acc[m];
-        rhs[m] = load[m] - a * Ku[m];
+        rhs[m] = -a * Ku[m];
+      }
+      if (r >= 2 && r < 2 + blocks_.K.p) {  // the held contact DOFs load the rows within the band of them
+        const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
+        for (int m = 0; m < me; ++m) rhs[m] += load[m];
       }
     }
   blocks_.M.multiply(U_tilde_, y.U, 2, s, me, true, b);
