@@ -11,8 +11,7 @@ BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
     : rows(n_rows),
       p(half_bandwidth),
       lanes(n_lanes),
-      re(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0),
-      im(re.size(), 0.0) {}
+      a(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0) {}
 
 void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate,
                            double scale) const {
@@ -23,13 +22,12 @@ void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1,
     std::fill_n(s_re, m_end, 0.0);
     std::fill_n(s_im, m_end, 0.0);
     for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
-      const double* a_re = re.data() + at(r, k, 0);
-      const double* a_im = im.data() + at(r, k, 0);
+      const double* a_k = a.data() + at(r, k, 0);
       const double* x_re = x.re.data() + x.at(r + k, 0);
       const double* x_im = x.im.data() + x.at(r + k, 0);
       for (int m = 0; m < m_end; ++m) {
-        s_re[m] += a_re[m] * x_re[m] - a_im[m] * x_im[m];
-        s_im[m] += a_re[m] * x_im[m] + a_im[m] * x_re[m];
+        s_re[m] += a_k[m] * x_re[m];
+        s_im[m] += a_k[m] * x_im[m];
       }
     }
     double* __restrict y_re = y.re.data() + y.at(r, 0);
@@ -54,14 +52,11 @@ double BandedLanes::bilinear(const LaneVectors& x, const LaneVectors& y, int m_e
     const double* xr_re = x.re.data() + x.at(r, 0);
     const double* xr_im = x.im.data() + x.at(r, 0);
     for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
-      const double* a_re = re.data() + at(r, k, 0);
-      const double* a_im = im.data() + at(r, k, 0);
+      const double* a_k = a.data() + at(r, k, 0);
       const double* y_re = y.re.data() + y.at(r + k, 0);
       const double* y_im = y.im.data() + y.at(r + k, 0);
-      for (int m = 0; m < m_end; ++m) {  // Re(conj(x) (a y))
-        const double ay_re = a_re[m] * y_re[m] - a_im[m] * y_im[m], ay_im = a_re[m] * y_im[m] + a_im[m] * y_re[m];
-        sum[m] += xr_re[m] * ay_re + xr_im[m] * ay_im;
-      }
+      for (int m = 0; m < m_end; ++m)  // Re(conj(x) (a y))
+        sum[m] += a_k[m] * (xr_re[m] * y_re[m] + xr_im[m] * y_im[m]);
     }
   }
   double total = 0;
@@ -71,13 +66,11 @@ double BandedLanes::bilinear(const LaneVectors& x, const LaneVectors& y, int m_e
 
 BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
     : first_(first), n_(A.rows - first), p_(A.p), lanes_(A.lanes) {
-  using Complex = std::complex<double>;
   const int n = n_, p = p_;
-  L_re_.assign(static_cast<std::size_t>(n) * std::max(p, 1) * lanes_, 0.0);
-  L_im_.assign(L_re_.size(), 0.0);
+  L_.assign(static_cast<std::size_t>(n) * std::max(p, 1) * lanes_, 0.0);
   inv_D_.assign(static_cast<std::size_t>(n) * lanes_, 0.0);
-  std::vector<Complex> band(static_cast<std::size_t>(n) * (p + 1));
-  const auto entry = [&band, p](int r, int c) -> Complex& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
+  std::vector<double> band(static_cast<std::size_t>(n) * (p + 1));
+  const auto entry = [&band, p](int r, int c) -> double& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
   std::vector<double> D(n);
   for (int m = 0; m < lanes_; ++m) {
     for (int r = 0; r < n; ++r)
@@ -85,12 +78,12 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
     for (int r = 0; r < n; ++r) {
       const int lowest = std::max(0, r - p);
       for (int c = lowest; c < r; ++c) {
-        Complex v = entry(r, c);
-        for (int q = lowest; q < c; ++q) v -= entry(r, q) * D[q] * std::conj(entry(c, q));
+        double v = entry(r, c);
+        for (int q = lowest; q < c; ++q) v -= entry(r, q) * D[q] * entry(c, q);
         entry(r, c) = v / D[c];
       }
-      double d = entry(r, r).real();
-      for (int q = lowest; q < r; ++q) d -= std::norm(entry(r, q)) * D[q];
+      double d = entry(r, r);
+      for (int q = lowest; q < r; ++q) d -= entry(r, q) * entry(r, q) * D[q];
       if (!(d > 0) || !std::isfinite(d)) {
         std::ostringstream msg;
         msg << "BandedLaneFactor: lane " << m << " is not positive definite (pivot " << r << " = " << d << ")";
@@ -98,49 +91,31 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
       }
       D[r] = d;
       inv_D_[static_cast<std::size_t>(r) * lanes_ + m] = 1.0 / d;
-      for (int k = 1; k <= p && k <= r; ++k) {
-        const std::size_t at = (static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m;
-        L_re_[at] = entry(r, r - k).real();
-        L_im_[at] = entry(r, r - k).imag();
-      }
+      for (int k = 1; k <= p && k <= r; ++k) L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = entry(r, r - k);
     }
   }
 }
 
 void BandedLaneFactor::solve(LaneVectors& x, int m_end) const {
   const int p = p_, lanes = lanes_;
-  double* y_re = x.re.data() + x.at(first_, 0);
-  double* y_im = x.im.data() + x.at(first_, 0);
-  for (int r = 0; r < n_; ++r) {  // L y = b
-    double* __restrict out_re = y_re + static_cast<std::size_t>(r) * lanes;
-    double* __restrict out_im = y_im + static_cast<std::size_t>(r) * lanes;
-    for (int k = 1; k <= p && k <= r; ++k) {
-      const double* l_re = L_re_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
-      const double* l_im = L_im_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
-      const double* b_re = out_re - static_cast<std::size_t>(k) * lanes;
-      const double* b_im = out_im - static_cast<std::size_t>(k) * lanes;
-      for (int m = 0; m < m_end; ++m) {
-        out_re[m] -= l_re[m] * b_re[m] - l_im[m] * b_im[m];
-        out_im[m] -= l_re[m] * b_im[m] + l_im[m] * b_re[m];
+  for (int part = 0; part < 2; ++part) {  // a real matrix: the real and imaginary parts apart
+    double* y = (part ? x.im : x.re).data() + x.at(first_, 0);
+    for (int r = 0; r < n_; ++r) {  // L y = b
+      double* __restrict out = y + static_cast<std::size_t>(r) * lanes;
+      for (int k = 1; k <= p && k <= r; ++k) {
+        const double* l = L_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
+        const double* b = out - static_cast<std::size_t>(k) * lanes;
+        for (int m = 0; m < m_end; ++m) out[m] -= l[m] * b[m];
       }
     }
-  }
-  for (int r = n_ - 1; r >= 0; --r) {  // x = D^-1 y - L^H x
-    double* __restrict out_re = y_re + static_cast<std::size_t>(r) * lanes;
-    double* __restrict out_im = y_im + static_cast<std::size_t>(r) * lanes;
-    const double* d = inv_D_.data() + static_cast<std::size_t>(r) * lanes;
-    for (int m = 0; m < m_end; ++m) {
-      out_re[m] *= d[m];
-      out_im[m] *= d[m];
-    }
-    for (int k = 1; k <= p && r + k < n_; ++k) {
-      const double* l_re = L_re_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
-      const double* l_im = L_im_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
-      const double* x_re = out_re + static_cast<std::size_t>(k) * lanes;
-      const double* x_im = out_im + static_cast<std::size_t>(k) * lanes;
-      for (int m = 0; m < m_end; ++m) {
-        out_re[m] -= l_re[m] * x_re[m] + l_im[m] * x_im[m];
-        out_im[m] -= l_re[m] * x_im[m] - l_im[m] * x_re[m];
+    for (int r = n_ - 1; r >= 0; --r) {  // x = D^-1 y - L^T x
+      double* __restrict out = y + static_cast<std::size_t>(r) * lanes;
+      const double* d = inv_D_.data() + static_cast<std::size_t>(r) * lanes;
+      for (int m = 0; m < m_end; ++m) out[m] *= d[m];
+      for (int k = 1; k <= p && r + k < n_; ++k) {
+        const double* l = L_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
+        const double* b = out + static_cast<std::size_t>(k) * lanes;
+        for (int m = 0; m < m_end; ++m) out[m] -= l[m] * b[m];
       }
     }
   }

@@ -24,16 +24,17 @@ struct LaneVectors {
   }
 };
 
-/// A banded matrix per lane, entries (r, r + k) for |k| <= p (zero outside [0, rows)).
+/// A real symmetric banded matrix per lane, entries (r, r + k) for |k| <= p (zero outside [0, rows)),
+/// applied to complex lane-vectors (its real and imaginary parts apart).
 struct BandedLanes {
   int rows = 0, p = 0, lanes = 0;
-  std::vector<double> re, im;  ///< entry (r, r + k) of lane m at ((r (2p+1) + k + p) lanes + m)
+  std::vector<double> a;  ///< entry (r, r + k) of lane m at ((r (2p+1) + k + p) lanes + m)
   BandedLanes() = default;
   BandedLanes(int n_rows, int half_bandwidth, int n_lanes);
   std::size_t at(int r, int k, int m) const {
     return (static_cast<std::size_t>(r) * (2 * p + 1) + k + p) * lanes + m;
   }
-  std::complex<double> get(int r, int k, int m) const { return {re[at(r, k, m)], im[at(r, k, m)]}; }
+  double get(int r, int k, int m) const { return a[at(r, k, m)]; }
 
   /// y(rows [r0, r1)) = A x for lanes [0, m_end) (x and y distinct); with accumulate, y += scale A x.
   void multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate = false,
@@ -42,8 +43,8 @@ struct BandedLanes {
   double bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const;
 };
 
-/// L D L^H of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and
-/// its solves (row-oriented band LDL^T of Golub & Van Loan, sec. 4.3, for Hermitian matrices, as in
+/// L D L^T of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and
+/// its solves (row-oriented band LDL^T of Golub & Van Loan, sec. 4.3, as in
 /// linalg/block_circulant_solver.cpp). Throws std::runtime_error if a lane's block is not positive definite.
 class BandedLaneFactor {
  public:
@@ -54,8 +55,8 @@ class BandedLaneFactor {
 
  private:
   int first_ = 0, n_ = 0, p_ = 0, lanes_ = 0;
-  std::vector<double> L_re_, L_im_;  ///< entry (q, q - k), k = 1..p, of lane m at ((q p + k - 1) lanes + m)
-  std::vector<double> inv_D_;        ///< 1 / D(q) at q lanes + m
+  std::vector<double> L_;      ///< entry (q, q - k), k = 1..p, of lane m at ((q p + k - 1) lanes + m)
+  std::vector<double> inv_D_;  ///< 1 / D(q) at q lanes + m
 };
 
 }  // namespace slidewave

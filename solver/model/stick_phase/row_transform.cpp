@@ -53,9 +53,11 @@ void RowTransform::forward(const double* x, LaneVectors& X) const {
     // r2c does not write its input (FFTW's default for out-of-place real-to-complex transforms).
     fftw_execute_split_dft_r2c(plans_->forward, const_cast<double*>(x) + 2 * static_cast<std::size_t>(j) * n_x_,
                                plans_->re.data(), plans_->im.data());
-    for (int d = 0; d < 2; ++d) {
-      std::copy_n(plans_->re.data() + d * lanes, lanes, X.re.data() + X.at(2 * j + d, 0));
-      std::copy_n(plans_->im.data() + d * lanes, lanes, X.im.data() + X.at(2 * j + d, 0));
+    std::copy_n(plans_->re.data(), lanes, X.re.data() + X.at(2 * j, 0));
+    std::copy_n(plans_->im.data(), lanes, X.im.data() + X.at(2 * j, 0));
+    for (int m = 0; m < lanes; ++m) {  // u_y: -i (a + i b) = b - i a
+      X.re[X.at(2 * j + 1, m)] = plans_->im[lanes + m];
+      X.im[X.at(2 * j + 1, m)] = -plans_->re[lanes + m];
     }
   }
 }
@@ -64,9 +66,12 @@ void RowTransform::inverse(const LaneVectors& X, int n_mesh_rows, double* x) con
   const int lanes = this->lanes();
   const double scale = 1.0 / n_x_;
   for (int j = 0; j < n_mesh_rows; ++j) {
-    for (int d = 0; d < 2; ++d) {  // c2r destroys its input: the scratch copy
-      std::copy_n(X.re.data() + X.at(2 * j + d, 0), lanes, plans_->re.data() + d * lanes);
-      std::copy_n(X.im.data() + X.at(2 * j + d, 0), lanes, plans_->im.data() + d * lanes);
+    // c2r destroys its input: the scratch copy, u_y turned back (i (a + i b) = -b + i a).
+    std::copy_n(X.re.data() + X.at(2 * j, 0), lanes, plans_->re.data());
+    std::copy_n(X.im.data() + X.at(2 * j, 0), lanes, plans_->im.data());
+    for (int m = 0; m < lanes; ++m) {
+      plans_->re[lanes + m] = -X.im[X.at(2 * j + 1, m)];
+      plans_->im[lanes + m] = X.re[X.at(2 * j + 1, m)];
     }
     double* row = x + 2 * static_cast<std::size_t>(j) * n_x_;
     fftw_execute_split_dft_c2r(plans_->inverse, plans_->re.data(), plans_->im.data(), row);

@@ -6,6 +6,8 @@
 // linalg/block_circulant_solver.hpp, with FFTW plans made the same way (ESTIMATE, NO_SIMD: a function of
 // the sizes alone), one plan per direction for one mesh row, executed row by row through a scratch
 // spectrum (FFTW's split new-array execution wants the plan's own real/imaginary offset).
+// The spectra are given in the basis of model/stick_phase/wavenumber_blocks.hpp: the u_y rows (odd r)
+// multiplied by -i after the forward transform, by i before the inverse.
 #include <memory>
 
 #include "model/stick_phase/banded_lanes.hpp"

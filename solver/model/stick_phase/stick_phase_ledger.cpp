@@ -6,7 +6,7 @@ namespace {
 /// Lane 0 of rows 0..s-1 (real: the column sums of the layer's vector).
 Eigen::VectorXd lane_zero(const LaneVectors& X) {
   Eigen::VectorXd x(X.rows);
-  for (int r = 0; r < X.rows; ++r) x(r) = X.re[X.at(r, 0)];
+  for (int r = 0; r < X.rows; ++r) x(r) = lane_zero_value(X, r);
   return x;
 }
 

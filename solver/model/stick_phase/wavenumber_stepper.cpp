@@ -12,10 +12,7 @@ namespace {
 BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
   BandedLanes A = blocks.K;
   const double b = hht.mass_factor(), k = 1 - hht.alpha;
-  for (std::size_t e = 0; e < A.re.size(); ++e) {
-    A.re[e] = b * blocks.M.re[e] + k * blocks.K.re[e];
-    A.im[e] = b * blocks.M.im[e] + k * blocks.K.im[e];
-  }
+  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
   return A;
 }
 
@@ -150,7 +147,7 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
     }
   blocks_.M.multiply(U_tilde_, y.U, 2, s, me, true, b);
   for (int r = 2; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
-    y.U.re[y.U.at(r, 0)] -= (1 - a) * n_x * (blocks_.K_fd0.row(r).dot(u_top_next));
+    add_to_lane_zero(y.U, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   A_eff_interior_.solve(y.U, me);
   for (int c = 0; c < 2; ++c) {
     std::copy_n(hold_.re.data() + hold_.at(c, 0), me, y.U.re.data() + y.U.at(c, 0));
@@ -172,7 +169,7 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       }
     }
   blocks_.K.multiply(y.U, y.KU, 0, s, me);
-  for (int r = 0; r < s; ++r) y.KU.re[y.KU.at(r, 0)] += n_x * blocks_.K_fd0.row(r).dot(u_top_next);
+  for (int r = 0; r < s; ++r) add_to_lane_zero(y.KU, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   // Reactions from the contact rows of the equation of motion.
   blocks_.M.multiply(y.A, MA_contact_, 0, 2, me);
   for (int c = 0; c < 2; ++c)
