@@ -48,9 +48,21 @@ void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1,
 double BandedLanes::bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const {
   std::vector<double> per_lane(m_end, 0.0);
   double* __restrict sum = per_lane.data();
+  const bool quadratic = &x == &y;  // x^H A x: the symmetric band's upper half twice, the diagonal once
   for (int r = 0; r < rows; ++r) {
     const double* xr_re = x.re.data() + x.at(r, 0);
     const double* xr_im = x.im.data() + x.at(r, 0);
+    if (quadratic) {
+      const double* d = a.data() + at(r, 0, 0);
+      for (int m = 0; m < m_end; ++m) sum[m] += d[m] * (xr_re[m] * xr_re[m] + xr_im[m] * xr_im[m]);
+      for (int k = 1; k <= p && r + k < rows; ++k) {
+        const double* a_k = a.data() + at(r, k, 0);
+        const double* y_re = x.re.data() + x.at(r + k, 0);
+        const double* y_im = x.im.data() + x.at(r + k, 0);
+        for (int m = 0; m < m_end; ++m) sum[m] += 2 * a_k[m] * (xr_re[m] * y_re[m] + xr_im[m] * y_im[m]);
+      }
+      continue;
+    }
     for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
       const double* a_k = a.data() + at(r, k, 0);
       const double* y_re = y.re.data() + y.at(r + k, 0);
