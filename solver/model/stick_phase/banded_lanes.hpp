@@ -1,8 +1,9 @@
 #pragma once
-// Complex banded Hermitian matrices of one mesh column, one per wavenumber ("lane" m), stored with the
-// lane fastest so that every loop over rows runs a vectorizable inner loop over the active lanes
-// (the layout of linalg/block_circulant_solver.hpp). A row r of a lane-vector X is X.re[r lanes + m],
-// X.im[r lanes + m]. Used by the stick-phase stepper (docs/stick-phase.md).
+// Real symmetric banded matrices of one mesh column, one per wavenumber ("lane" m), applied to complex
+// vectors (the lanes' states), stored with the lane fastest so that every loop over rows runs a
+// vectorizable inner loop over the active lanes (the layout of linalg/block_circulant_solver.hpp). A row r
+// of a lane-vector X is X.re[r lanes + m], X.im[r lanes + m]. Used by the stick-phase stepper
+// (docs/stick-phase.md; model/stick_phase/wavenumber_blocks.hpp says why the matrices are real).
 #include <complex>
 #include <cstddef>
 #include <vector>

@@ -7,8 +7,9 @@
 // imaginary (the mesh and the isotropic element are symmetric under x -> -x), so in the basis where u_y is
 // multiplied by -i (Y = D^H X, D = diag(1, i) per node) they are real symmetric: each lane's recurrence is
 // real, acting on the real and imaginary parts of its state apart (half the work of complex arithmetic).
-// The lanes' states are kept in that basis (model/stick_phase/row_transform.hpp turns them). The top row (prescribed, x-uniform) couples to the free rows through
-// wavenumber 0 only: its summed couplings are kept as real s x 2 and 2 x 2 matrices.
+// The lanes' states are kept in that basis (model/stick_phase/row_transform.hpp turns them). The top row
+// (prescribed, x-uniform) couples to the free rows through wavenumber 0 only: its summed couplings are kept
+// as real s x 2 and 2 x 2 matrices, in the layer's basis.
 #include <Eigen/Dense>
 
 #include "model/layer_model.hpp"

@@ -5,8 +5,7 @@
 // into independent systems per wavenumber m = 0..n_x/2 on the s = 2 n_y free DOFs of one mesh column,
 //     A_eff,II U_I(n+1) = b (M U~)_I - a (K U(n))_I - (b M_Ic + (1-a) K_Ic) U_c - [m = 0] (1-a) n_x K_fd0 u_top(n+1),
 // (I the interior rows, c the held contact rows, b = 1/(beta dt^2), U~ the predictor), the Newmark updates,
-// the mass products carried through the equation of motion as time/hht_stepper.hpp carries them, and the
-// contact reactions from the contact rows of the equation of motion,
+// and the contact reactions from the contact rows of the equation of motion,
 //     w R(n+1) = (M A(n+1))_c + (1-a) (K U(n+1))_c + a (K U(n))_c - a' R(n).
 // Only wavenumber 0 feels the top's motion. Every other one is homogeneous with the contact held: it
 // tends to its static state U* (K_II U*_I = -K_Ic U_c, V = A = 0, R* = (K U*)_c), and HHT's numerical
