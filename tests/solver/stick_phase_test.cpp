@@ -105,8 +105,10 @@ Agreement compare_at(const LayerModel& m, const PlainRun& plain, StickPhase& sti
     a.sums = std::max({a.sums, std::fabs(e.work_external - rows.global.work_external[n]) / work_scale,
                        std::fabs(e.dissipation_friction - rows.global.dissipation_friction[n]) / work_scale,
                        std::fabs(e.work_contact_normal - rows.global.work_contact_normal[n]) / work_scale});
-    if (!rows.global.dissipation_hht.empty())
-      a.sums = std::max(a.sums, std::fabs(e.hht.total() - rows.global.dissipation_hht[n]) / work_scale);
+    if (!rows.global.dissipation_hht.empty())  // each HHT term of the ledger
+      a.sums = std::max({a.sums, std::fabs(e.hht.gamma - rows.global.dissipation_hht_gamma[n]) / work_scale,
+                         std::fabs(e.hht.beta - rows.global.dissipation_hht_beta[n]) / work_scale,
+                         std::fabs(e.hht.shift - rows.global.dissipation_hht_shift[n]) / work_scale});
     // Node by node on the rows of the interface (every interface_stride steps).
     if (n % m.config.output.interface_stride == 0) {
       const std::size_t row = n / m.config.output.interface_stride, n_c = m.mesh.n_contact();
