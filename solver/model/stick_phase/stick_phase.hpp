@@ -27,6 +27,7 @@ class StickPhase {
   static constexpr double kRetireTolerance = 0x1p-54;
 
   /// @param layer the layer (must outlive this object); u_x_top: the preload's top shear displacement
+  /// @param retire_tolerance 0: never retire (also what any hht_alpha but the paper's 0.1 gets)
   StickPhase(const LayerModel& layer, double u_x_top, double retire_tolerance = kRetireTolerance);
 
   /// Starts from the layer's loop state (all contact nodes sticking), e.g. the seeded state at t = 0.
