@@ -1,0 +1,63 @@
+#pragma once
+// Real symmetric banded matrices of one mesh column, one per wavenumber ("lane" m), applied to complex
+// vectors (the lanes' states), stored with the lane fastest so that every loop over rows runs a
+// vectorizable inner loop over the active lanes (the layout of linalg/block_circulant_solver.hpp). A row r
+// of a lane-vector X is X.re[r lanes + m], X.im[r lanes + m]. Used by the stick-phase stepper
+// (docs/stick-phase.md; model/stick_phase/wavenumber_blocks.hpp says why the matrices are real).
+#include <complex>
+#include <cstddef>
+#include <vector>
+
+namespace slidewave {
+
+/// rows x lanes complex values, split into real and imaginary parts, lane fastest.
+struct LaneVectors {
+  int rows = 0, lanes = 0;
+  std::vector<double> re, im;
+  LaneVectors() = default;
+  LaneVectors(int n_rows, int n_lanes)
+      : rows(n_rows), lanes(n_lanes), re(static_cast<std::size_t>(n_rows) * n_lanes, 0.0), im(re.size(), 0.0) {}
+  std::size_t at(int r, int m) const { return static_cast<std::size_t>(r) * lanes + m; }
+  std::complex<double> get(int r, int m) const { return {re[at(r, m)], im[at(r, m)]}; }
+  void set(int r, int m, std::complex<double> z) {
+    re[at(r, m)] = z.real();
+    im[at(r, m)] = z.imag();
+  }
+};
+
+/// A real symmetric banded matrix per lane, entries (r, r + k) for |k| <= p (zero outside [0, rows)),
+/// applied to complex lane-vectors (its real and imaginary parts apart).
+struct BandedLanes {
+  int rows = 0, p = 0, lanes = 0;
+  std::vector<double> a;  ///< entry (r, r + k) of lane m at ((r (2p+1) + k + p) lanes + m)
+  BandedLanes() = default;
+  BandedLanes(int n_rows, int half_bandwidth, int n_lanes);
+  std::size_t at(int r, int k, int m) const {
+    return (static_cast<std::size_t>(r) * (2 * p + 1) + k + p) * lanes + m;
+  }
+  double get(int r, int k, int m) const { return a[at(r, k, m)]; }
+
+  /// y(rows [r0, r1)) = A x for lanes [0, m_end) (x and y distinct); with accumulate, y += scale A x.
+  void multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate = false,
+                double scale = 1) const;
+  /// sum over lanes m < m_end of weight[m] Re(x_m^H A_m y_m).
+  double bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const;
+};
+
+/// L D L^T of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and
+/// its solves (row-oriented band LDL^T of Golub & Van Loan, sec. 4.3, as in
+/// linalg/block_circulant_solver.cpp). Throws std::runtime_error if a lane's block is not positive definite.
+class BandedLaneFactor {
+ public:
+  BandedLaneFactor() = default;
+  BandedLaneFactor(const BandedLanes& A, int first);
+  /// Solves in place on rows [first, rows) of x, lanes [0, m_end).
+  void solve(LaneVectors& x, int m_end) const;
+
+ private:
+  int first_ = 0, n_ = 0, p_ = 0, lanes_ = 0;
+  std::vector<double> L_;      ///< entry (q, q - k), k = 1..p, of lane m at ((q p + k - 1) lanes + m)
+  std::vector<double> inv_D_;  ///< 1 / D(q) at q lanes + m
+};
+
+}  // namespace slidewave

@@ -1,0 +1,93 @@
+#include "model/stick_phase/stick_phase.hpp"
+
+#include <cmath>
+
+namespace slidewave {
+
+StickPhase::StickPhase(const LayerModel& layer, double u_x_top, double retire_tolerance)
+    : layer_(layer),
+      hht_(layer.config.time.hht_alpha, layer.d.dt),
+      u_x_top_(u_x_top),
+      blocks_(layer),
+      transform_(layer.mesh.n_x),
+      // The transient factor of the retirement test is measured for the paper's hht_alpha = 0.1 (at a smaller
+      // alpha the high frequencies decay slower and grow more before they do): elsewhere, no retirement.
+      stepper_(blocks_, hht_, layer.config.time.contact_weighting == ContactWeighting::alpha,
+               layer.config.time.hht_alpha == 0.1 ? retire_tolerance : 0.0),
+      ledger_(blocks_, hht_, layer.d.V0) {}
+
+Eigen::Vector2d StickPhase::top_after(std::int64_t step) const {
+  // The formula of simulate()'s top_after, for one top node.
+  return {u_x_top_ + layer_.d.V0 * (step * hht_.dt), layer_.config.loading.Uy_over_H * layer_.d.H};
+}
+
+void StickPhase::start(const LoopState& loop) {
+  stepper_.start(loop.dynamics, loop.energy.hht.on() ? &loop.energy.hht.shift_f : nullptr, transform_);
+  step_ = loop.step;
+  sums_ = loop.energy;
+  r_ = loop.dynamics.r;
+  r_trial_ = r_;
+  u_contact_ = loop.dynamics.u.head(layer_.n_contact_dofs);
+  u_contact_held_.resize(u_contact_.size());
+  du_contact_.resize(u_contact_.size());
+}
+
+bool StickPhase::step(const FrictionBounds& bounds) {
+  stepper_.step(top_after(step_ + 1));
+  const ModeState &before = stepper_.current(), &after = stepper_.next();
+  transform_.inverse(after.R, 1, r_trial_.data());
+  for (Eigen::Index k = 0; k < r_trial_.size() / 2; ++k) {  // the test of AllStickSolution::solve
+    const double r_x = r_trial_(2 * k), r_y = r_trial_(2 * k + 1);
+    if (!(r_y >= 0 && std::fabs(r_x) <= bounds.bound(static_cast<int>(k), r_y))) return false;
+  }
+  transform_.inverse(after.U, 1, u_contact_held_.data());
+  du_contact_ = u_contact_held_ - u_contact_;
+  ledger_.book_step(before, after, stepper_.n_active(), top_after(step_), top_after(step_ + 1), du_contact_, r_,
+                    r_trial_, sums_);
+  stepper_.commit();
+  ++step_;
+  r_ = r_trial_;
+  u_contact_.swap(u_contact_held_);
+  return true;
+}
+
+double StickPhase::kinetic() const { return ledger_.kinetic(stepper_.current(), stepper_.n_active()); }
+
+double StickPhase::elastic() const {
+  return ledger_.elastic(stepper_.current(), stepper_.n_active(), stepper_.retired_elastic(), top_after(step_));
+}
+
+void StickPhase::reconstruct(LoopState& loop) const {
+  const int n_f = layer_.n_free, n_t = layer_.n_top, n_y = layer_.mesh.n_y;
+  const ModeState& x = stepper_.current();
+  HHTState& s = loop.dynamics;
+  const Eigen::Vector2d top = top_after(step_);
+  s.u.resize(n_f + n_t);
+  transform_.inverse(x.U, n_y, s.u.data());
+  s.u.tail(n_t) = layer_.top_displacement(top.x(), top.y());
+  s.v = Eigen::VectorXd::Zero(n_f + n_t);
+  transform_.inverse(x.V, n_y, s.v.data());
+  for (int k = n_f; k < n_f + n_t; k += 2) s.v(k) = layer_.d.V0;
+  s.acc = Eigen::VectorXd::Zero(n_f + n_t);
+  transform_.inverse(x.A, n_y, s.acc.data());
+  s.Ku = layer_.K * s.u;
+  s.Mu_f = layer_.M_ff_rows * s.u.head(n_f);
+  s.Mv_f = layer_.M_ff_rows * s.v.head(n_f);
+  s.Ma_f = layer_.M_ff_rows * s.acc.head(n_f);
+  s.r = r_;
+  loop.energy = sums_;
+  loop.energy.F_top = s.Ku.tail(n_t) + layer_.M_top_rows * s.acc;
+  if (sums_.hht.on()) {
+    HhtDissipation& h = loop.energy.hht;
+    h.v_f = s.v.head(n_f);
+    h.acc_f = s.acc.head(n_f);
+    h.Ma_f = s.Ma_f;
+    h.Ku_f = s.Ku.head(n_f);
+    h.shift_f.resize(n_f);
+    transform_.inverse(x.S, n_y, h.shift_f.data());
+  }
+  loop.contact.assign(layer_.mesh.n_contact(), ContactState::stick);
+  loop.step = step_;
+}
+
+}  // namespace slidewave

@@ -1,0 +1,238 @@
+#include "model/stick_phase/wavenumber_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <utility>
+
+namespace slidewave {
+namespace {
+
+/// b M + (1 - a) K, lane by lane.
+BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
+  BandedLanes A = blocks.K;
+  const double b = hht.mass_factor(), k = 1 - hht.alpha;
+  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
+  return A;
+}
+
+/// y(rows [r0, r1)) -= (A restricted to the columns 0, 1) x_c, all lanes: the load of the held contact DOFs.
+void subtract_contact_columns(const BandedLanes& A, const LaneVectors& x_c, LaneVectors& y, int r0, int r1) {
+  for (int r = r0; r < r1; ++r)
+    for (int c = 0; c < 2; ++c) {
+      const int k = c - r;
+      if (std::abs(k) > A.p) continue;
+      for (int m = 0; m < A.lanes; ++m) y.set(r, m, y.get(r, m) - A.get(r, k, m) * x_c.get(c, m));
+    }
+}
+
+/// Largest modulus over the rows of lane m of a - b (b null: of a).
+double max_distance(const LaneVectors& a, const LaneVectors* b, int m) {
+  double d = 0;
+  for (int r = 0; r < a.rows; ++r) d = std::max(d, std::abs(a.get(r, m) - (b ? b->get(r, m) : 0.0)));
+  return d;
+}
+
+/// dt sqrt(lambda_min) of K_II x = lambda M_II x per lane, by inverse iteration (the interior of K factorized).
+std::vector<double> lowest_frequencies(const WavenumberBlocks& blocks, const BandedLaneFactor& K_interior, double dt) {
+  const int s = blocks.s, lanes = blocks.lanes;
+  LaneVectors x(s, lanes), Mx(s, lanes), Kx(s, lanes);
+  for (int r = 2; r < s; ++r)
+    for (int m = 0; m < lanes; ++m) x.set(r, m, 1.0 + 0.1 * r);  // any start with a share of the lowest mode
+  std::vector<double> lambda(lanes, 0.0);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    blocks.M.multiply(x, Mx, 0, s, lanes);
+    for (int c = 0; c < 2; ++c)
+      for (int m = 0; m < lanes; ++m) Mx.set(c, m, 0.0);
+    K_interior.solve(Mx, lanes);  // x <- K_II^-1 M_II x, normalized
+    for (int m = 0; m < lanes; ++m) {
+      double norm = 0;
+      for (int r = 2; r < s; ++r) norm = std::max(norm, std::abs(Mx.get(r, m)));
+      for (int r = 2; r < s; ++r) x.set(r, m, Mx.get(r, m) / norm);
+    }
+  }
+  blocks.M.multiply(x, Mx, 0, s, lanes);
+  blocks.K.multiply(x, Kx, 0, s, lanes);
+  for (int m = 0; m < lanes; ++m) {
+    double xKx = 0, xMx = 0;
+    for (int r = 2; r < s; ++r) {
+      xKx += (std::conj(x.get(r, m)) * Kx.get(r, m)).real();
+      xMx += (std::conj(x.get(r, m)) * Mx.get(r, m)).real();
+    }
+    lambda[m] = dt * std::sqrt(xKx / xMx);
+  }
+  return lambda;
+}
+
+}  // namespace
+
+WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCoefficients& hht, bool alpha_weighted,
+                                     double retire_tolerance)
+    : blocks_(blocks),
+      hht_(hht),
+      w_(alpha_weighted ? 1 - hht.alpha : 1.0),
+      w_previous_(alpha_weighted ? hht.alpha : 0.0),
+      retire_tolerance_(retire_tolerance),
+      A_eff_interior_(effective_band(blocks, hht), 2),
+      K_interior_(blocks.K, 2),
+      state_a_(blocks.s, blocks.lanes),
+      state_b_(blocks.s, blocks.lanes),
+      hold_load_(blocks.s, blocks.lanes),
+      U_tilde_(blocks.s, blocks.lanes),
+      MA_contact_(2, blocks.lanes),
+      U_static_(blocks.s, blocks.lanes),
+      KU_static_(blocks.s, blocks.lanes) {
+  // Transient growth of a lane's distance from its static state (docs/stick-phase.md): HHT's amplification
+  // of one frequency Omega = omega dt, in the units (u, dt v, beta dt^2 a), grows a start by at most
+  // max(6.3, 1.65 / Omega) (measured over Omega, all powers), times 3 >= sqrt(cond M) from the modes to the DOFs.
+  lowest_frequency_ = lowest_frequencies(blocks, K_interior_, hht.dt);
+  for (const double omega : lowest_frequency_) transient_factor_.push_back(3 * std::max(6.3, 1.65 / omega));
+}
+
+void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {
+  const int s = blocks_.s, lanes = blocks_.lanes;
+  ModeState& x = state_a_;
+  transform.forward(layer.u.data(), x.U);
+  transform.forward(layer.v.data(), x.V);
+  transform.forward(layer.acc.data(), x.A);
+  transform.forward(layer.Ku.data(), x.KU);
+  transform.forward(layer.r.data(), x.R);
+  track_shift_ = shift_f != nullptr;
+  if (track_shift_) transform.forward(shift_f->data(), x.S);
+  state_b_ = state_a_;
+  current_ = &state_a_;
+  next_ = &state_b_;
+  // The held contact DOFs: u_x as at the start, u_y = 0 (what the all-stick solution imposes).
+  hold_ = LaneVectors(2, lanes);
+  for (int m = 0; m < lanes; ++m) hold_.set(0, m, x.U.get(0, m));
+  hold_load_ = LaneVectors(s, lanes);
+  subtract_contact_columns(effective_band(blocks_, hht_), hold_, hold_load_, 2, s);  // -(b M_Ic + (1-a) K_Ic) U_c
+  // Static states: K_II U*_I = -K_Ic U_c, U*_c = U_c.
+  U_static_ = LaneVectors(s, lanes);
+  subtract_contact_columns(blocks_.K, hold_, U_static_, 2, s);
+  K_interior_.solve(U_static_, lanes);
+  for (int c = 0; c < 2; ++c)
+    for (int m = 0; m < lanes; ++m) U_static_.set(c, m, hold_.get(c, m));
+  blocks_.K.multiply(U_static_, KU_static_, 0, s, lanes);
+  n_active_ = lanes;
+  retired_elastic_ = 0;
+  u_scale_ = layer.u.head(2 * (s / 2) * blocks_.n_x).lpNorm<Eigen::Infinity>();
+  r_scale_ = layer.r.lpNorm<Eigen::Infinity>();
+}
+
+void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
+  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = blocks_.lanes;
+  const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
+  const double g = hht_.gamma, g_old = 1 - hht_.gamma;
+  const ModeState& x = *current_;
+  ModeState& y = *next_;
+  // Predictor u~ = u + dt v + c a; the interior right-hand side b M u~ - a K u(n) + the held contact's load.
+  for (int r = 0; r < s; ++r)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(r) * lanes;
+      const double* u = (part ? x.U.im : x.U.re).data() + e;
+      const double* v = (part ? x.V.im : x.V.re).data() + e;
+      const double* acc = (part ? x.A.im : x.A.re).data() + e;
+      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
+      double* __restrict ut = (part ? U_tilde_.im : U_tilde_.re).data() + e;
+      double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
+      for (int m = 0; m < me; ++m) {
+        ut[m] = u[m] + dt * v[m] + c2 * acc[m];
+        rhs[m] = -a * Ku[m];
+      }
+      if (r >= 2 && r < 2 + blocks_.K.p) {  // the held contact DOFs load the rows within the band of them
+        const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
+        for (int m = 0; m < me; ++m) rhs[m] += load[m];
+      }
+    }
+  blocks_.M.multiply(U_tilde_, y.U, 2, s, me, true, b);
+  for (int r = 2; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
+    add_to_lane_zero(y.U, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
+  A_eff_interior_.solve(y.U, me);
+  for (int c = 0; c < 2; ++c) {
+    std::copy_n(hold_.re.data() + hold_.at(c, 0), me, y.U.re.data() + y.U.at(c, 0));
+    std::copy_n(hold_.im.data() + hold_.at(c, 0), me, y.U.im.data() + y.U.at(c, 0));
+  }
+  // a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)).
+  for (int r = 0; r < s; ++r)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(r) * lanes;
+      const double* u_next = (part ? y.U.im : y.U.re).data() + e;
+      const double* ut = (part ? U_tilde_.im : U_tilde_.re).data() + e;
+      const double* acc = (part ? x.A.im : x.A.re).data() + e;
+      const double* v = (part ? x.V.im : x.V.re).data() + e;
+      double* __restrict acc_next = (part ? y.A.im : y.A.re).data() + e;
+      double* __restrict v_next = (part ? y.V.im : y.V.re).data() + e;
+      for (int m = 0; m < me; ++m) {
+        acc_next[m] = b * (u_next[m] - ut[m]);
+        v_next[m] = v[m] + dt * (g_old * acc[m] + g * acc_next[m]);
+      }
+    }
+  blocks_.K.multiply(y.U, y.KU, 0, s, me);
+  for (int r = 0; r < s; ++r) add_to_lane_zero(y.KU, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next));
+  // Reactions from the contact rows of the equation of motion.
+  blocks_.M.multiply(y.A, MA_contact_, 0, 2, me);
+  for (int c = 0; c < 2; ++c)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(c) * lanes;
+      const double* Ma_c = (part ? MA_contact_.im : MA_contact_.re).data() + e;
+      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
+      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
+      const double* R = (part ? x.R.im : x.R.re).data() + e;
+      double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e;
+      for (int m = 0; m < me; ++m)
+        R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
+    }
+  if (!track_shift_) return;
+  // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
+  for (int r = 0; r < s; ++r)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(r) * lanes;
+      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
+      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
+      double* __restrict shift = (part ? y.S.im : y.S.re).data() + e;
+      for (int m = 0; m < me; ++m) shift[m] = a * (Ku_next[m] - Ku[m]);
+      if (r < 2) {
+        const double* R = (part ? x.R.im : x.R.re).data() + e;
+        const double* R_next = (part ? y.R.im : y.R.re).data() + e;
+        for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
+      }
+    }
+}
+
+void WavenumberStepper::commit() {
+  std::swap(current_, next_);
+  while (retire_tolerance_ > 0 && n_active_ > 1 && may_retire(n_active_ - 1)) {
+    retire(n_active_ - 1);
+    --n_active_;
+  }
+}
+
+bool WavenumberStepper::may_retire(int m) const {
+  const ModeState& x = *current_;
+  const double dt = hht_.dt;
+  const double distance = std::max({max_distance(x.U, &U_static_, m), dt * max_distance(x.V, nullptr, m),
+                                    hht_.beta * dt * dt * max_distance(x.A, nullptr, m)});
+  double reaction_distance = 0;
+  for (int c = 0; c < 2; ++c) reaction_distance = std::max(reaction_distance, std::abs(x.R.get(c, m) - KU_static_.get(c, m)));
+  // Lane m adds at most weight(m) |X_m| to an entry of the layer's vector (the inverse DFT).
+  const double share = transient_factor_[m] * blocks_.weight[m];
+  return share * distance <= retire_tolerance_ * u_scale_ &&
+         share * reaction_distance <= retire_tolerance_ * r_scale_;
+}
+
+void WavenumberStepper::retire(int m) {
+  for (ModeState* x : {&state_a_, &state_b_}) {
+    for (int r = 0; r < blocks_.s; ++r) {
+      x->U.set(r, m, U_static_.get(r, m));
+      x->KU.set(r, m, KU_static_.get(r, m));
+      for (LaneVectors* zero : {&x->V, &x->A, &x->S}) zero->set(r, m, 0.0);
+    }
+    for (int c = 0; c < 2; ++c) x->R.set(c, m, KU_static_.get(c, m));
+  }
+  double elastic = 0;
+  for (int r = 0; r < blocks_.s; ++r) elastic += (std::conj(U_static_.get(r, m)) * KU_static_.get(r, m)).real();
+  retired_elastic_ += 0.5 * blocks_.weight[m] * elastic;
+}
+
+}  // namespace slidewave

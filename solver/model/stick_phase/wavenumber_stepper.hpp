@@ -1,0 +1,83 @@
+#pragma once
+// The HHT step of the layer while every contact node sticks, wavenumber by wavenumber
+// (docs/stick-phase.md). Sticking holds the contact DOFs (y = q + W r = 0: u_x(n+1) = u_x(n), u_y = 0), so
+// the step is the HHT step of the layer with those DOFs prescribed: linear and block-circulant, it splits
+// into independent systems per wavenumber m = 0..n_x/2 on the s = 2 n_y free DOFs of one mesh column,
+//     A_eff,II U_I(n+1) = b (M U~)_I - a (K U(n))_I - (b M_Ic + (1-a) K_Ic) U_c - [m = 0] (1-a) n_x K_fd0 u_top(n+1),
+// (I the interior rows, c the held contact rows, b = 1/(beta dt^2), U~ the predictor), the Newmark updates,
+// and the contact reactions from the contact rows of the equation of motion,
+//     w R(n+1) = (M A(n+1))_c + (1-a) (K U(n+1))_c + a (K U(n))_c - a' R(n).
+// Only wavenumber 0 feels the top's motion. Every other one is homogeneous with the contact held: it
+// tends to its static state U* (K_II U*_I = -K_Ic U_c, V = A = 0, R* = (K U*)_c), and HHT's numerical
+// damping takes it there. Once the distance from it cannot change a double of the layer's state or
+// reactions, the wavenumber is retired: set to U* and no longer stepped. Wavenumbers retire from the
+// highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1.
+#include <Eigen/Dense>
+
+#include "model/stick_phase/banded_lanes.hpp"
+#include "model/stick_phase/row_transform.hpp"
+#include "model/stick_phase/wavenumber_blocks.hpp"
+#include "time/hht.hpp"
+#include "time/hht_stepper.hpp"
+
+namespace slidewave {
+
+/// The layer's state in wavenumbers (free rows; the top is x-uniform and known). The mass products are
+/// not carried (time/hht_stepper.hpp carries them): a step is bound by memory traffic, and a band product
+/// of a vector it reads anyway costs less than reading and writing three more.
+struct ModeState {
+  LaneVectors U, V, A, KU;  ///< u, v, a, K u of the free rows (K u with the top's share)
+  LaneVectors S;            ///< the HHT shift term s (model/energy_ledger.hpp), if booked
+  LaneVectors R;            ///< contact reactions (2 rows)
+  ModeState(int s, int lanes) : U(s, lanes), V(s, lanes), A(s, lanes), KU(s, lanes), S(s, lanes), R(2, lanes) {}
+};
+
+class WavenumberStepper {
+ public:
+  /// Factorizes the interior blocks of A_eff,m and K_m of every wavenumber.
+  /// @param retire_tolerance  a wavenumber retires when kappa (its share of any entry) of its distance from
+  ///                          its static state is below retire_tolerance times the layer's scale (0: never)
+  WavenumberStepper(const WavenumberBlocks& blocks, const HHTCoefficients& hht, bool alpha_weighted,
+                    double retire_tolerance);
+
+  const WavenumberBlocks& blocks() const { return blocks_; }
+  /// The state at t = 0 from the layer's (its free rows), with shift_f the ledger's s (or null); the held
+  /// contact values U_c = (u_x(0), 0) and the static states.
+  void start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform);
+  /// One step into next() (current() unchanged), the top displaced to u_top_next (one node's x, y).
+  void step(const Eigen::Vector2d& u_top_next);
+  /// next() becomes current(); then retires what may be.
+  void commit();
+
+  const ModeState& current() const { return *current_; }
+  const ModeState& next() const { return *next_; }
+  int n_active() const { return n_active_; }
+  /// 1/2 sum of weight Re(U*^H K U*) over the retired wavenumbers (their constant share of u.K u / 2).
+  double retired_elastic() const { return retired_elastic_; }
+  /// The transient growth factor of lane m in the retirement test (docs/stick-phase.md).
+  double transient_factor(int m) const { return transient_factor_[m]; }
+  /// dt sqrt(lowest eigenvalue of K_II,m relative to M_II,m): lane m's slowest frequency times dt.
+  double lowest_frequency(int m) const { return lowest_frequency_[m]; }
+
+ private:
+  /// True if lane m is within the retirement bound of its static state.
+  bool may_retire(int m) const;
+  void retire(int m);
+
+  const WavenumberBlocks& blocks_;
+  HHTCoefficients hht_;
+  double w_, w_previous_, retire_tolerance_;
+  BandedLaneFactor A_eff_interior_, K_interior_;
+  ModeState state_a_, state_b_;
+  ModeState* current_ = &state_a_;
+  ModeState* next_ = &state_b_;
+  LaneVectors hold_, hold_load_, U_tilde_, MA_contact_;  ///< hold_: U_c
+  LaneVectors U_static_, KU_static_;                      ///< the static states (R* = rows 0, 1 of KU*)
+  int n_active_ = 0;
+  double retired_elastic_ = 0;
+  double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
+  bool track_shift_ = false;
+  std::vector<double> lowest_frequency_, transient_factor_;
+};
+
+}  // namespace slidewave
