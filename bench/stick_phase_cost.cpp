@@ -3,12 +3,13 @@
 // docs/stick-phase.md) from the same seeded state at t = 0, with and without retirement; the number of
 // active wavenumbers over the stick phase; the step of the first slip of both. A timed program (not a
 // test). Times are CPU seconds of the thread (plain: simulate()'s steps 1 .. first slip - 1, rows recorded;
-// wavenumbers: step() with the kinetic and elastic energy of every step). Usage: slidewave_bench_stick [--n 64 128] [--lambda 2] [--t-end 1000] [--nu 0.2] [--f 1.5]
+// wavenumbers: step() with the kinetic and elastic energy of every step). Usage: slidewave_bench_stick [--n 64 128]
+// [--lambda 2] [--t-end 1000] [--nu 0.2] [--f 1.5]
 #include <algorithm>
 #include <atomic>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <string>
 #include <vector>
@@ -75,7 +76,8 @@ struct StickRun {
 
 /// The stick phase from `start` until its all-stick reactions leave a bound; kinetic and elastic energy
 /// of every step as the recorder would ask for them.
-StickRun run_stick(const slidewave::LayerModel& m, double u_x_top, const slidewave::LoopState& start, double tolerance) {
+StickRun run_stick(const slidewave::LayerModel& m, double u_x_top, const slidewave::LoopState& start,
+                   double tolerance) {
   slidewave::StickPhase stick(m, u_x_top, tolerance);
   const auto law = slidewave::make_friction_law(m.config.friction);
   const auto bounds = law->bounds(start.friction);
@@ -118,9 +120,12 @@ int main(int argc, char** argv) {
       return 2;
     }
     const double value = std::atof(argv[++i]);
-    if (option == "--t-end") t_end = value;
-    else if (option == "--nu") nu = value;
-    else if (option == "--f") f = value;
+    if (option == "--t-end")
+      t_end = value;
+    else if (option == "--nu")
+      nu = value;
+    else if (option == "--f")
+      f = value;
     else {
       std::fprintf(stderr, "unknown option %s\n", option.c_str());
       return 2;
@@ -128,8 +133,10 @@ int main(int argc, char** argv) {
   }
   if (resolutions.empty()) resolutions = {64, 128};
   if (lambdas.empty()) lambdas = {2};
-  std::printf("| case | plain ms/step | wavenumbers ms/step: all steps | first 50 | last 200 | no retirement | "
-              "speed-up (all steps) | first slip plain / wavenumbers | active wavenumbers at steps 1, 50, 100, 200, 400, 800, last | reactions: retiring - not, max / max r |\n");
+  std::printf(
+      "| case | plain ms/step | wavenumbers ms/step: all steps | first 50 | last 200 | no retirement | "
+      "speed-up (all steps) | first slip plain / wavenumbers | active wavenumbers at steps 1, 50, 100, 200, 400, 800, "
+      "last | reactions: retiring - not, max / max r |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|---|---:|\n");
   for (const double lambda_over_H : lambdas)
     for (const int n : resolutions) {
@@ -159,12 +166,13 @@ int main(int argc, char** argv) {
       for (std::size_t k : {std::size_t{0}, std::size_t{49}, std::size_t{99}, std::size_t{199}, std::size_t{399},
                             std::size_t{799}, steps - 1})
         if (k < steps) active += std::to_string(retiring.active[k]) + " ";
-      std::printf("| H/%d, lambda %gH (%d wavenumbers) | %.4f | %.4f | %.4f | %.4f | %.4f | %.1fx | %lld / %lld | %s| %.1e |\n",
-                  n, lambda_over_H, model.mesh.n_x / 2 + 1, plain_ms, all, mean_ms(retiring.step_seconds, 0, 50),
-                  mean_ms(retiring.step_seconds, steps > 200 ? steps - 200 : 0, steps),
-                  mean_ms(full.step_seconds, 0, full.step_seconds.size()), plain_ms / all,
-                  static_cast<long long>(plain.first_slip), static_cast<long long>(retiring.first_slip),
-                  active.c_str(), retire_change / r_max);
+      std::printf(
+          "| H/%d, lambda %gH (%d wavenumbers) | %.4f | %.4f | %.4f | %.4f | %.4f | %.1fx | %lld / %lld | %s| %.1e |\n",
+          n, lambda_over_H, model.mesh.n_x / 2 + 1, plain_ms, all, mean_ms(retiring.step_seconds, 0, 50),
+          mean_ms(retiring.step_seconds, steps > 200 ? steps - 200 : 0, steps),
+          mean_ms(full.step_seconds, 0, full.step_seconds.size()), plain_ms / all,
+          static_cast<long long>(plain.first_slip), static_cast<long long>(retiring.first_slip), active.c_str(),
+          retire_change / r_max);
       std::fflush(stdout);
     }
   return 0;

@@ -115,8 +115,9 @@ Agreement compare_at(const LayerModel& m, const PlainRun& plain, StickPhase& sti
       for (std::size_t k = 0; k < n_c; ++k) {
         const double r_x = -rows.interface.tangential_traction.data[row * n_c + k] * m.d.h;
         const double r_y = rows.interface.normal_traction.data[row * n_c + k] * m.d.h;
-        a.reactions_every_step = std::max({a.reactions_every_step, std::fabs(stick.reactions()(2 * k) - r_x) / force_scale * n_c,
-                                           std::fabs(stick.reactions()(2 * k + 1) - r_y) / force_scale * n_c});
+        a.reactions_every_step =
+            std::max({a.reactions_every_step, std::fabs(stick.reactions()(2 * k) - r_x) / force_scale * n_c,
+                      std::fabs(stick.reactions()(2 * k + 1) - r_y) / force_scale * n_c});
       }
     }
   }

@@ -103,7 +103,8 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
       }
       D[r] = d;
       inv_D_[static_cast<std::size_t>(r) * lanes_ + m] = 1.0 / d;
-      for (int k = 1; k <= p && k <= r; ++k) L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = entry(r, r - k);
+      for (int k = 1; k <= p && k <= r; ++k)
+        L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = entry(r, r - k);
     }
   }
 }

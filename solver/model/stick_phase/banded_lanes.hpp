@@ -32,9 +32,7 @@ struct BandedLanes {
   std::vector<double> a;  ///< entry (r, r + k) of lane m at ((r (2p+1) + k + p) lanes + m)
   BandedLanes() = default;
   BandedLanes(int n_rows, int half_bandwidth, int n_lanes);
-  std::size_t at(int r, int k, int m) const {
-    return (static_cast<std::size_t>(r) * (2 * p + 1) + k + p) * lanes + m;
-  }
+  std::size_t at(int r, int k, int m) const { return (static_cast<std::size_t>(r) * (2 * p + 1) + k + p) * lanes + m; }
   double get(int r, int k, int m) const { return a[at(r, k, m)]; }
 
   /// y(rows [r0, r1)) = A x for lanes [0, m_end) (x and y distinct); with accumulate, y += scale A x.

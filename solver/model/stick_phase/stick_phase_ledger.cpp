@@ -80,7 +80,8 @@ void StickPhaseLedger::book_step(const ModeState& before, const ModeState& after
   if (!sums.hht.on()) return;
   // The three HHT terms of EnergyLedger::book_hht_terms, each a quadratic form of the two states.
   const double dt = hht_.dt;
-  const LaneVectors v_sum = combine(before.V, after.V, 1, n_active), a_change = combine(after.A, before.A, -1, n_active),
+  const LaneVectors v_sum = combine(before.V, after.V, 1, n_active),
+                    a_change = combine(after.A, before.A, -1, n_active),
                     a_sum = combine(before.A, after.A, 1, n_active);
   const double* w = blocks_.weight.data();
   const double v_M_da = 0.5 * blocks_.M.bilinear(v_sum, a_change, n_active, w) +

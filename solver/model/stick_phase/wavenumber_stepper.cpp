@@ -180,8 +180,7 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
       const double* R = (part ? x.R.im : x.R.re).data() + e;
       double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e;
-      for (int m = 0; m < me; ++m)
-        R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
+      for (int m = 0; m < me; ++m) R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
     }
   if (!track_shift_) return;
   // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
@@ -214,11 +213,11 @@ bool WavenumberStepper::may_retire(int m) const {
   const double distance = std::max({max_distance(x.U, &U_static_, m), dt * max_distance(x.V, nullptr, m),
                                     hht_.beta * dt * dt * max_distance(x.A, nullptr, m)});
   double reaction_distance = 0;
-  for (int c = 0; c < 2; ++c) reaction_distance = std::max(reaction_distance, std::abs(x.R.get(c, m) - KU_static_.get(c, m)));
+  for (int c = 0; c < 2; ++c)
+    reaction_distance = std::max(reaction_distance, std::abs(x.R.get(c, m) - KU_static_.get(c, m)));
   // Lane m adds at most weight(m) |X_m| to an entry of the layer's vector (the inverse DFT).
   const double share = transient_factor_[m] * blocks_.weight[m];
-  return share * distance <= retire_tolerance_ * u_scale_ &&
-         share * reaction_distance <= retire_tolerance_ * r_scale_;
+  return share * distance <= retire_tolerance_ * u_scale_ && share * reaction_distance <= retire_tolerance_ * r_scale_;
 }
 
 void WavenumberStepper::retire(int m) {

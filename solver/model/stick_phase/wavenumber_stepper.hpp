@@ -72,7 +72,7 @@ class WavenumberStepper {
   ModeState* current_ = &state_a_;
   ModeState* next_ = &state_b_;
   LaneVectors hold_, hold_load_, U_tilde_, MA_contact_;  ///< hold_: U_c
-  LaneVectors U_static_, KU_static_;                      ///< the static states (R* = rows 0, 1 of KU*)
+  LaneVectors U_static_, KU_static_;                     ///< the static states (R* = rows 0, 1 of KU*)
   int n_active_ = 0;
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
