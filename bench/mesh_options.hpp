@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "config/run_config.hpp"
+
 namespace slidewave::bench {
 
 /// True when argv[i] is `--n` or `--lambda`: its values are appended and i moves past them.
@@ -20,6 +22,18 @@ inline bool mesh_option(const std::string& option, int argc, char** argv, int& i
     return true;
   }
   return false;
+}
+
+/// The paper's configuration at one mesh (n elements per H, period lambda_over_H H) with the benchmark's nu,
+/// f and t_end: the case every benchmark times.
+inline RunConfig bench_config(int n, double lambda_over_H, double nu, double f, double t_end) {
+  RunConfig config;
+  config.mesh.elements_per_H = n;
+  config.geometry.lambda_over_H = lambda_over_H;
+  config.material.nu = nu;
+  config.friction.f = f;
+  config.time.t_end = t_end;
+  return config;
 }
 
 }  // namespace slidewave::bench

@@ -155,12 +155,7 @@ int main(int argc, char** argv) {
               "steps/s", "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
   for (double lambda_over_H : lambdas)
     for (int n : resolutions) {
-      slidewave::RunConfig config;
-      config.mesh.elements_per_H = n;
-      config.geometry.lambda_over_H = lambda_over_H;
-      config.material.nu = nu;
-      config.friction.f = f;
-      config.time.t_end = t_end;
+      slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
       config.numerics.linear_solver = solver;
       config.numerics.threads = threads;
       if (substrate_ratio > 0)

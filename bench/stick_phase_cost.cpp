@@ -140,12 +140,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|---|---:|\n");
   for (const double lambda_over_H : lambdas)
     for (const int n : resolutions) {
-      slidewave::RunConfig config;
-      config.mesh.elements_per_H = n;
-      config.geometry.lambda_over_H = lambda_over_H;
-      config.material.nu = nu;
-      config.friction.f = f;
-      config.time.t_end = t_end;
+      slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
       config.output.progress = slidewave::ProgressMode::never;
       const slidewave::LayerModel model(config);
       UntilFirstSlip plain;
