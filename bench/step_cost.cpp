@@ -1,4 +1,5 @@
-// Per-step cost of slidewave runs: split into predictor, free solve, contact, correction,
+// Per-step cost of slidewave runs: the stick phase (stick_ms, per step taken in wavenumbers while every
+// node sticks, model/stick_phase/), then per step after it: predictor, free solve, contact, correction,
 // diagnostics and output (with --stream), steps/s, the ratio of one step to one K_eff solve with the
 // run's solver (step/slv, the machine-independent figure), and the peak resident memory of the process
 // so far (getrusage; run one case per process for the peak of that case alone).
@@ -150,9 +151,9 @@ int main(int argc, char** argv) {
               stream_folder.empty()
                   ? "none (in memory)"
                   : ("streamed, checkpoints every " + std::to_string(checkpoint_interval) + " s").c_str());
-  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h", "lam/H",
-              "n_dofs", "steps", "predict", "free_slv", "contact", "correct", "diagnost", "output", "ms/step",
-              "steps/s", "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
+  std::printf("%6s %5s %8s %9s | %9s %9s %9s %9s %9s %9s %9s | %9s %9s %9s %8s %8s %7s %8s %8s %8s\n", "H/h", "lam/H",
+              "n_dofs", "steps", "stick_ms", "predict", "free_slv", "contact", "correct", "diagnost", "output",
+              "ms/step", "steps/s", "1solve_ms", "Ku_ms", "step/slv", "sweeps", "setup_s", "total_s", "peak_MB");
   for (double lambda_over_H : lambdas)
     for (int n : resolutions) {
       slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
@@ -175,13 +176,17 @@ int main(int argc, char** argv) {
       slidewave::simulate(model, {}, nullptr, &profile, timed.get());
       const double output_seconds = timed ? timed->seconds : 0;
       const double total = seconds_since(start);
-      const double per_step = (total - profile.setup) / profile.steps;
       const double solve = one_solve_seconds(model);
-      const auto ms = [&](double s) { return 1e3 * s / profile.steps; };
+      // Stick-phase steps (model/stick_phase/) per stick step, the others per step after it.
+      const std::int64_t plain_steps = profile.steps - profile.stick_phase_steps;
+      const double per_step = (total - profile.setup - profile.stick_phase) / plain_steps;
+      const auto ms = [&](double s) { return 1e3 * s / plain_steps; };
+      const double stick_ms = profile.stick_phase_steps ? 1e3 * profile.stick_phase / profile.stick_phase_steps : 0;
       std::printf(
-          "%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f %8.2f "
+          "%6d %5g %8d %9lld | %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.4f | %9.3f %9.0f %9.3f %8.3f %8.2f %7.2f %8.2f "
+          "%8.2f "
           "%8.1f\n",
-          n, lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps), ms(profile.predictor),
+          n, lambda_over_H, model.mesh.n_dofs(), static_cast<long long>(profile.steps), stick_ms, ms(profile.predictor),
           ms(profile.free_solve), ms(profile.contact), ms(profile.correction), ms(profile.diagnostics),
           ms(output_seconds), 1e3 * per_step, 1 / per_step, 1e3 * solve, 1e3 * stiffness_product_seconds(model),
           per_step / solve, static_cast<double>(profile.contact_sweeps) / profile.steps, profile.setup, total,

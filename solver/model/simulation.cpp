@@ -16,6 +16,7 @@
 #include "model/loop_state_arrays.hpp"
 #include "model/mode_seed.hpp"
 #include "model/recorder.hpp"
+#include "model/stick_phase/stick_phase_run.hpp"
 #include "model/substrate.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -32,6 +33,9 @@ class Stopwatch {
     const auto now = std::chrono::steady_clock::now();
     profile_->*field += std::chrono::duration<double>(now - last_).count();
     last_ = now;
+  }
+  void count_stick_phase(std::int64_t steps) {
+    if (profile_) profile_->stick_phase_steps = steps;
   }
   void count(std::int64_t step, int contact_sweeps) {
     if (!profile_) return;
@@ -252,7 +256,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   const std::int64_t n_steps_max = step_count(m.d);
   if (observer) observer->setup_done();
   const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
+  const bool stick_phase = stick_phase_applies(m, loop);
+  LoopState seeded;  // the state at t = 0, which the stick phase of a resumed run replays from
   if (const StateArrays* resumed = observer ? observer->start_state() : nullptr) {
+    if (stick_phase) seeded = loop;
     loop.recording.u_contact_start.resize(n_c);
     restore_from_arrays(*resumed, loop);
   } else {
@@ -263,7 +270,20 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   ProgressPacer pacer(progress);
   std::string failure;  // why the run stopped early, if it did
 
-  // 4. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
+  // 4. The stick phase in wavenumbers, while every node sticks (model/stick_phase/stick_phase_run.hpp).
+  if (stick_phase && all_stuck(loop.contact)) {
+    const StickPhaseHooks hooks{[&] { return stop_requested && stop_requested->load(); },
+                                [&](const LoopState& view, const RunObserver::Capture& full) {
+                                  watch.count(view.step, 0);
+                                  pacer.step_done(view.step * hht.dt, view, recorder);
+                                  if (observer) observer->after_step(recorder.rows(), full);
+                                }};
+    run_stick_phase(m, pre.u_x_top, *friction, loop.step > 0 ? seeded : loop, n_steps_max, recorder, hooks, loop);
+    watch.lap(&StepProfile::stick_phase);
+    watch.count_stick_phase(loop.step);
+  }
+
+  // 5. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
   ContactStep contact(n_c, W, settings);
   // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
@@ -277,7 +297,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       break;
     }
     const double t = (loop.step + 1) * hht.dt;
-    // 4a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
+    // 5a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
     stepper.predict(s, u_d_next);
     watch.lap(&StepProfile::predictor);
     const Eigen::VectorXd& u_free = stepper.solve_free();
@@ -287,20 +307,20 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       u_free_substrate = &sub->stepper.solve_free();
     }
     watch.lap(&StepProfile::free_solve);
-    // 4b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
+    // 5b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
     const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
     if (!report.converged) {
       failure = "contact_not_converged";
       break;
     }
     watch.lap(&StepProfile::contact);
-    // 4c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
+    // 5c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
     u_d_following = top_after(loop.step + 2);
     stepper.correct(contact.r_next, s, &u_d_following);
     if (sub) sub->stepper.correct(sub->load(contact.r_next), loop.substrate, &sub->u_bottom);
     u_d_next.swap(u_d_following);
     watch.lap(&StepProfile::correction);
-    // 4d. Energy ledger, friction memory, output rows, first opening.
+    // 5d. Energy ledger, friction memory, output rows, first opening.
     ++loop.step;
     contact.du = s.u.head(n_c) - stepper.u_previous().head(n_c);
     ledger.book_step(s, stepper.u_previous(), stepper.r_previous(), contact.du, loop.energy);
