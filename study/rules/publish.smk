@@ -114,3 +114,24 @@ else:
     ruleorder: restore_committed > rule_scores
     ruleorder: restore_committed > energy_evidence
     ruleorder: restore_committed > contrast_theory
+
+
+if not FROM_COMMITTED:
+    localrules: published_check
+
+    rule published_check:
+        """CI, after `all`: every committed table is what the code makes now (study/check_published.py), the
+        runs' build names aside; a difference means the results moved and the campaign must be republished."""
+        input: list(PUBLISHED.values())
+        output: "results/published_check.txt"
+        log: "logs/published_check.log"
+        run:
+            from study.check_published import check
+
+            text, agree = check({repo_path(f"study/results/{committed}"): source
+                                 for committed, source in PUBLISHED.items()})
+            Path(log[0]).parent.mkdir(parents=True, exist_ok=True)
+            Path(log[0]).write_text(text)
+            if not agree:
+                raise ValueError(f"{text.splitlines()[-1]}; the differences: {log[0]}")
+            Path(output[0]).write_text(text)
