@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-import yaml
+from study.config_check import load_yaml
 
 
 class ConfigOverrideError(ValueError):
@@ -50,8 +50,7 @@ def check_overrides(overrides: Mapping, study_config_path: str | Path) -> None:
     """Raises ConfigOverrideError listing every override whose type clashes with the study config."""
     if not overrides:  # nothing to check: spares parsing the study config at every Snakemake start
         return
-    with open(study_config_path) as stream:
-        study = yaml.load(stream, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)) or {}
+    study = load_yaml(study_config_path)
     messages = clashes(overrides, study)
     if messages:
         raise ConfigOverrideError(
