@@ -246,7 +246,11 @@ def flutter_nu():
 #   Snakemake, which parses this workflow again (~1.5 s of CPU per job);
 # - jobs are chosen by the greedy scheduler unless the command line asks for --scheduler: the default
 #   (ilp) starts the CBC solver, a process, each time a job ends and two or more wait, while a core
-#   stays idle; its objective (priorities, early removal of temp() files) has nothing to weigh here.
+#   stays idle; its objective (priorities, early removal of temp() files) has nothing to weigh here;
+# - pandas cannot be imported while jobs are planned and run: Snakemake 7 imports it at the start of
+#   every call (~0.25 s of CPU beyond numpy, before any job starts) only to fingerprint pandas objects
+#   given as params, which no rule has; other params are fingerprinted the same way without it.
+#   Nothing run in this process uses it (study/in_process.py neither; figures run in processes of their own).
 def _execute_options(execute):
     names = inspect.signature(execute).parameters
     scheduler_given = any(arg.split("=")[0] == "--scheduler" for arg in sys.argv)
@@ -256,7 +260,14 @@ def _execute_options(execute):
             kwargs["force_use_threads"] = True
         if "scheduler_type" in names and not scheduler_given:
             kwargs["scheduler_type"] = "greedy"
-        return execute(*args, **kwargs)
+        without_pandas = "pandas" not in sys.modules
+        if without_pandas:
+            sys.modules["pandas"] = None  # `import pandas` raises ImportError
+        try:
+            return execute(*args, **kwargs)
+        finally:
+            if without_pandas and sys.modules.get("pandas", 0) is None:
+                del sys.modules["pandas"]
     return execute_with_options
 
 
