@@ -33,7 +33,7 @@ def load_schema(path: str | Path = SCHEMA_PATH) -> dict:
 
 def load_yaml(path: str | Path) -> dict:
     """A YAML file (a copy: callers may change it), parsed once per process by libyaml. The Snakefile
-    loads the study config and the schema so rather than by `configfile:` and `validate`, whose
+    reads the study config and the schema with it instead of `configfile:` and `validate`, whose
     pure-Python parser takes ~0.15 s of CPU for each at every start of Snakemake."""
     return copy.deepcopy(_parsed_yaml(str(path)))
 
