@@ -14,24 +14,29 @@
 import os
 import sys
 
-from snakemake.utils import min_version, validate
+from snakemake.utils import min_version, update_config
 
 min_version("7.21")
 sys.path.insert(0, workflow.basedir)
-from study.config_check import exit_on_errors, load_schema, reference_errors, schema_errors
+from study.config_check import exit_on_errors, fill_defaults, load_schema, load_yaml, reference_errors, schema_errors
 from study.config_overrides import check_overrides
 from study.sweeps import typed_numbers
 
-# Here `config` holds only the command line's values: check their types before Snakemake merges them.
-check_overrides(config, os.path.join(workflow.basedir, "study/config.yaml"))
-configfile: os.path.join(workflow.basedir, "study/config.yaml")
+# Here `config` holds only the command line's values: check their types before they are merged.
+STUDY_CONFIG = os.path.join(workflow.basedir, "study/config.yaml")
+check_overrides(config, STUDY_CONFIG)
+# What `configfile: STUDY_CONFIG` does (the study config under the command line's values), with the
+# file parsed by libyaml (study/config_check.py: load_yaml).
+workflow.configfiles.append(STUDY_CONFIG)
+update_config(config, load_yaml(STUDY_CONFIG))
+update_config(config, workflow.overwrite_config)
 config.update(typed_numbers(config))  # --config passes nested numbers as strings
 # --config passes booleans as strings too; anything but true/false stays a string that the schema refuses.
 config.update({key: {"true": True, "false": False}.get(value, value) for key, value in config.items()
                if key == "from_committed" and isinstance(value, str)})
 # Every problem on one line naming the key and the allowed values (study/config_check.py).
 exit_on_errors(schema_errors(config, load_schema()))
-validate(config, "study/config.schema.yaml")  # fills the defaults
+fill_defaults(config, load_schema())  # what snakemake.utils.validate does, without parsing the schema again
 exit_on_errors(reference_errors(config, workflow.basedir))
 
 # Interpreter with numpy/h5py/matplotlib (Debian's), and the solver binary: none when the report is

@@ -1,11 +1,12 @@
-"""Checks of the command-line config (`--config`, `--configfile`) before Snakemake merges it into
+"""Checks of the command-line config (`--config`, `--configfile`) before the Snakefile merges it into
 study/config.yaml.
 
-Snakemake merges the two key by key, descending into every mapping of the study config; an override
-that puts a scalar or a list where the study config has a mapping (`--config sweeps=null`,
-`--config model=[1]`) makes that merge fail with a bare TypeError that names neither the key nor the
-expected type. This check names both. Every other type or range error is the schema's
-(study/config.schema.yaml), reported by `validate` with the key's path.
+The merge (Snakemake's `update_config`, as `configfile:` does it) goes key by key, descending into
+every mapping of the study config; an override that puts a scalar or a list where the study config
+has a mapping (`--config sweeps=null`, `--config model=[1]`) makes that merge fail with a bare
+TypeError that names neither the key nor the expected type. This check names both. Every other type
+or range error is the schema's (study/config.schema.yaml), reported by `config_check.schema_errors`
+with the key's path.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-import yaml
+from study.config_check import load_yaml
 
 
 class ConfigOverrideError(ValueError):
@@ -50,8 +51,7 @@ def check_overrides(overrides: Mapping, study_config_path: str | Path) -> None:
     """Raises ConfigOverrideError listing every override whose type clashes with the study config."""
     if not overrides:  # nothing to check: spares parsing the study config at every Snakemake start
         return
-    with open(study_config_path) as stream:
-        study = yaml.load(stream, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)) or {}
+    study = load_yaml(study_config_path)
     messages = clashes(overrides, study)
     if messages:
         raise ConfigOverrideError(

@@ -239,16 +239,36 @@ def flutter_nu():
     return [lo + i * (hi - lo) / (n - 1) for i in range(n)]
 
 
-# The rules with `run:` (measure, aggregate: study/in_process.py) are meant to run in threads of this
-# process. Snakemake 7 runs them so with --force-use-threads (and always on a cluster node); without
-# it, each would start a new Snakemake, which parses this workflow again (~1.5 s of CPU per job).
-# Hence the option is set here for every call (a Snakemake without it is left as it is).
-def _force_use_threads(execute):
-    def execute_with_threads(*args, **kwargs):
-        kwargs["force_use_threads"] = True
-        return execute(*args, **kwargs)
-    return execute_with_threads
+# How this process runs jobs, set here for every call of Snakemake 7 (an option it lacks is left as it
+# is; study/README.md, "Pipeline overhead"):
+# - the rules with `run:` (measure, aggregate: study/in_process.py) run in threads of this process,
+#   with --force-use-threads (always so on a cluster node); without it, each would start a new
+#   Snakemake, which parses this workflow again (~1.5 s of CPU per job);
+# - jobs are chosen by the greedy scheduler unless the command line asks for --scheduler: the default
+#   (ilp) starts the CBC solver, a process, each time a job ends and two or more wait, while a core
+#   stays idle; its objective (priorities, early removal of temp() files) has nothing to weigh here;
+# - pandas cannot be imported while jobs are planned and run: Snakemake 7 imports it at the start of
+#   every call (~0.25 s of CPU beyond numpy, before any job starts) only to fingerprint pandas objects
+#   given as params, which no rule has; other params are fingerprinted the same way without it.
+#   Nothing run in this process uses it (study/in_process.py neither; figures run in processes of their own).
+def _execute_options(execute):
+    names = inspect.signature(execute).parameters
+    scheduler_given = any(arg.split("=")[0] == "--scheduler" for arg in sys.argv)
+
+    def execute_with_options(*args, **kwargs):
+        if "force_use_threads" in names:
+            kwargs["force_use_threads"] = True
+        if "scheduler_type" in names and not scheduler_given:
+            kwargs["scheduler_type"] = "greedy"
+        without_pandas = "pandas" not in sys.modules
+        if without_pandas:
+            sys.modules["pandas"] = None  # `import pandas` raises ImportError
+        try:
+            return execute(*args, **kwargs)
+        finally:
+            if without_pandas and sys.modules.get("pandas", 0) is None:
+                del sys.modules["pandas"]
+    return execute_with_options
 
 
-if "force_use_threads" in inspect.signature(workflow.execute).parameters:
-    workflow.execute = _force_use_threads(workflow.execute)
+workflow.execute = _execute_options(workflow.execute)

@@ -60,4 +60,7 @@ rule measure:
     input: "results/runs/{run}/run.h5"
     output: "results/runs/{run}/metrics.json"
     log: "results/runs/{run}/logs/measure.log"
+    # A thread of the Snakemake process, whose own work no core of --cores is kept for either: the next
+    # run starts on the core the finished one freed while this one is measured.
+    threads: 0
     run: in_process.measure(input[0], output[0], log[0])

@@ -8,7 +8,6 @@ import subprocess
 from pathlib import Path
 
 import pytest
-import yaml
 
 REPO = Path(__file__).resolve().parents[2]
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
@@ -34,11 +33,10 @@ def pytest_collection_modifyitems(config, items):
 @pytest.fixture(scope="session")
 def study_config():
     """study/config.yaml validated (defaults filled) exactly as the Snakefile does."""
-    from snakemake.utils import validate
+    from study.config_check import fill_defaults, load_schema, load_yaml
 
-    with open(REPO / "study" / "config.yaml") as stream:
-        config = yaml.safe_load(stream)
-    validate(config, str(REPO / "study" / "config.schema.yaml"))
+    config = load_yaml(REPO / "study" / "config.yaml")
+    fill_defaults(config, load_schema())
     return config
 
 

@@ -1,5 +1,6 @@
 """study/config.yaml against its schema, and the expansion of sweeps into named run points."""
 
+import copy
 import csv
 import importlib.util
 import json
@@ -12,6 +13,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 from study import figure_kinds, sweeps
+from study.config_check import fill_defaults, load_schema
 from study.make_run_config import run_config
 
 from .conftest import REPO
@@ -31,6 +33,17 @@ def test_minimal_config_gets_the_papers_defaults():
     assert config["run_length"] == {"duration_transits": 60, "stop_after_opening_transits": 15, "t_end": None}
     (name,) = sweeps.sweep_points(config, "one")
     assert name == "nu0.20_f1.50_v1e-05_L2_n64_rho1000_reduced"
+
+
+@pytest.mark.parametrize("config", [{"sweeps": {"one": {}}}, "study/config.yaml"])
+def test_defaults_are_filled_as_snakemakes_validate_fills_them(config):
+    # The Snakefile fills them with the schema parsed once by libyaml (study/config_check.py).
+    if isinstance(config, str):
+        with open(REPO / config) as stream:
+            config = yaml.full_load(stream)  # as Snakemake's `configfile:` reads it
+    ours = copy.deepcopy(config)
+    fill_defaults(ours, load_schema())
+    assert ours == validated(config)
 
 
 @pytest.mark.parametrize("bad", [
