@@ -18,6 +18,11 @@ from snakemake.exceptions import WorkflowError
 # Scripts run as `-m study.*`, `-m analysis` and figures/*.py import from the repository root,
 # also when --directory puts the results elsewhere.
 os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, [str(REPO), os.environ.get("PYTHONPATH")]))
+# OpenBLAS starts a thread per core in every process that loads it: each `slidewave run` paid 0.1 s of
+# system CPU for threads its spectral path never uses (~40 s of `all` on 2 cores; the same bits either
+# way), and the in-process measure needs none. Set here, not in a rule's shell, so that existing runs are not
+# rerun for a changed rule; a value in the environment wins.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 wildcard_constraints:
     sweep="[A-Za-z][A-Za-z0-9_]*",
