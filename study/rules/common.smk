@@ -251,8 +251,8 @@ def flutter_nu():
 #   Snakemake, which parses this workflow again (~1.5 s of CPU per job);
 # - jobs are chosen by the greedy scheduler unless the command line asks for --scheduler: the default
 #   (ilp) starts the CBC solver, a process, each time a job ends and two or more wait, while a core
-#   stays idle; its objective beyond the greedy one (which also takes the highest priority first: build_solver's, then contrast_theory's),
-#   the early removal of temp() files, has nothing to weigh here;
+#   stays idle; its objective beyond the greedy one (which also takes the highest priority first:
+#   build_solver's, then contrast_theory's), the early removal of temp() files, has nothing to weigh here;
 # - pandas cannot be imported while jobs are planned and run: Snakemake 7 imports it at the start of
 #   every call (~0.25 s of CPU beyond numpy, before any job starts) only to fingerprint pandas objects
 #   given as params, which no rule has; other params are fingerprinted the same way without it.
