@@ -19,6 +19,7 @@
 // includes the output; without it nothing is written (the rows stay in memory).
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -178,7 +179,8 @@ int main(int argc, char** argv) {
       const double total = seconds_since(start);
       const double solve = one_solve_seconds(model);
       // Stick-phase steps (model/stick_phase/) per stick step, the others per step after it.
-      const std::int64_t plain_steps = profile.steps - profile.stick_phase_steps;
+      // (At least one: a run that ends inside the stick phase has no step after it.)
+      const std::int64_t plain_steps = std::max<std::int64_t>(1, profile.steps - profile.stick_phase_steps);
       const double per_step = (total - profile.setup - profile.stick_phase) / plain_steps;
       const auto ms = [&](double s) { return 1e3 * s / plain_steps; };
       const double stick_ms = profile.stick_phase_steps ? 1e3 * profile.stick_phase / profile.stick_phase_steps : 0;

@@ -10,11 +10,18 @@
 // D must be symmetric positive definite (a 2x2 block of the Delassus operator).
 // Cases are enumerated (open, stick, slip forward, slip backward); the first consistent one is returned.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <optional>
+#include <vector>
 
 namespace slidewave {
 
 enum class ContactState : signed char { open = 0, stick = 1, slip = 2 };
+
+/// Every node sticks.
+inline bool all_stuck(const std::vector<ContactState>& state) {
+  return std::all_of(state.begin(), state.end(), [](ContactState s) { return s == ContactState::stick; });
+}
 
 struct LocalContactSolution {
   Eigen::Vector2d r;

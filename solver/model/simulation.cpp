@@ -182,11 +182,6 @@ void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
   }
 }
 
-/// Every node sticks.
-bool all_stuck(const std::vector<ContactState>& state) {
-  return std::all_of(state.begin(), state.end(), [](ContactState s) { return s == ContactState::stick; });
-}
-
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
 /// A step that follows an all-stick step first tries the exact all-stick solution (contact/all_stick.hpp;

@@ -1,6 +1,5 @@
 #include "model/stick_phase/stick_phase_run.hpp"
 
-#include <algorithm>
 #include <memory>
 
 #include "model/loop_state_arrays.hpp"
@@ -8,10 +7,6 @@
 
 namespace slidewave {
 namespace {
-
-bool all_stuck(const std::vector<ContactState>& state) {
-  return std::all_of(state.begin(), state.end(), [](ContactState s) { return s == ContactState::stick; });
-}
 
 /// The step condition of simulate()'s loop.
 bool before_end(std::int64_t step, std::int64_t n_steps_max, const LoopState& loop, double dt) {
