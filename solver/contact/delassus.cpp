@@ -2,18 +2,7 @@
 
 #include <algorithm>
 
-// Contraction off: with it, GCC may fuse a product and a sum into one FMA (AVX2 and AVX-512F machines have
-// FMA), which rounds once where the baseline code rounds twice. The clones then differ from the baseline
-// code only in vector width, which leaves every entry's operations and their order unchanged: a run gives
-// the same bits on every x86-64 CPU.
-// SLIDEWAVE_NO_AVX512 (CMake option of the same name) drops the AVX-512 clone: a build that runs here as an
-// AVX2-only machine would, to measure the speed such machines get (bench/whole_run.sh).
-#if SLIDEWAVE_NO_AVX512
-#define SLIDEWAVE_MULTIVERSIONED __attribute__((target_clones("avx2", "default"), optimize("fp-contract=off")))
-#else
-#define SLIDEWAVE_MULTIVERSIONED \
-  __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
-#endif
+#include "linalg/vector_clones.hpp"
 
 namespace slidewave {
 
@@ -55,7 +44,7 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W) {
 namespace {
 
 /// out_i = out_i + (c0_i d0 + c1_i d1), i < n.
-SLIDEWAVE_MULTIVERSIONED
+SLIDEWAVE_VECTOR_CLONES
 void add_two_columns(const double* __restrict c0, const double* __restrict c1, double d0, double d1,
                      double* __restrict out, Eigen::Index n) {
   for (Eigen::Index i = 0; i < n; ++i) out[i] += c0[i] * d0 + c1[i] * d1;

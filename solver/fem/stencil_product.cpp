@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "linalg/vector_clones.hpp"
+
 namespace slidewave {
 namespace {
 
@@ -152,6 +154,7 @@ inline void sum_block(const double* __restrict u, double* __restrict out, const 
 
 }  // namespace
 
+SLIDEWAVE_VECTOR_CLONES
 void StencilProduct::apply_interior(int j, const double* __restrict u, double* __restrict Ku) const {
   if (n_x_ < 3) return;
   const int first_row = 2 * j * n_x_ + 2;  // row of node (1, j), d = 0

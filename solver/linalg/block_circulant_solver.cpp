@@ -12,6 +12,7 @@
 
 #include "linalg/fftw_planner.hpp"
 #include "linalg/thread_team.hpp"
+#include "linalg/vector_clones.hpp"
 
 namespace slidewave {
 
@@ -276,9 +277,10 @@ namespace {
 /// compile-time constant (the loops over k unroll and the loop over m vectorizes), 0 for the general case.
 /// Only the lanes m0 <= m < m1 are touched: each m is its own system, computed the same for any range.
 template <int P>
-void banded_sweeps(int s, int p_runtime, int lanes, int m0, int m1, const double* __restrict L_re,
-                   const double* __restrict L_im, const double* __restrict inv_D, double* __restrict y_re,
-                   double* __restrict y_im) {
+__attribute__((always_inline)) inline void banded_sweeps(int s, int p_runtime, int lanes, int m0, int m1,
+                                                         const double* __restrict L_re, const double* __restrict L_im,
+                                                         const double* __restrict inv_D, double* __restrict y_re,
+                                                         double* __restrict y_im) {
   const int p = P > 0 ? P : p_runtime;
   for (int r = 0; r < s; ++r) {
     double* __restrict out_re = y_re + static_cast<std::size_t>(r + p) * lanes;
@@ -338,6 +340,7 @@ void BlockCirculantSolver::inverse_transform(Spectrum spectrum, double* x, int j
   }
 }
 
+SLIDEWAVE_VECTOR_CLONES
 void BlockCirculantSolver::sweep(double* y_re, double* y_im, int m0, int m1) const {
   if (p_ == 3)
     banded_sweeps<3>(s_, p_, lanes_, m0, m1, L_re_.data(), L_im_.data(), inv_D_.data(), y_re, y_im);

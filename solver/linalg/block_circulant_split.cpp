@@ -7,8 +7,24 @@
 
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/thread_team.hpp"
+#include "linalg/vector_clones.hpp"
 
 namespace slidewave {
+namespace {
+
+/// One spectrum row X += G_0 R_0 + G_1 R_1 (complex, lanes m < n): the response to the bottom row's loads.
+SLIDEWAVE_VECTOR_CLONES
+void add_loads(const double* __restrict G0_re, const double* __restrict G0_im, const double* __restrict G1_re,
+               const double* __restrict G1_im, const double* __restrict R0_re, const double* __restrict R0_im,
+               const double* __restrict R1_re, const double* __restrict R1_im, double* __restrict X_re,
+               double* __restrict X_im, int n) {
+  for (int m = 0; m < n; ++m) {
+    X_re[m] += G0_re[m] * R0_re[m] - G0_im[m] * R0_im[m] + G1_re[m] * R1_re[m] - G1_im[m] * R1_im[m];
+    X_im[m] += G0_re[m] * R0_im[m] + G0_im[m] * R0_re[m] + G1_re[m] * R1_im[m] + G1_im[m] * R1_re[m];
+  }
+}
+
+}  // namespace
 
 void BlockCirculantSolver::prepare_split() {
   // kept_ and contact_ are allocated (and their FFT plans made) by the constructor.
@@ -70,11 +86,8 @@ void BlockCirculantSolver::solve_loaded(const Eigen::Ref<const Eigen::VectorXd>&
     const Share mesh_rows = share(n_y_, t, T);
     for (int r = 2 * mesh_rows.begin; r < 2 * mesh_rows.end; ++r) {
       const std::size_t row = static_cast<std::size_t>(r) * lanes_;
-      for (int m = 0; m < n_modes; ++m) {
-        const std::size_t k = row + m;
-        X_re[k] += G0_re[k] * R0_re[m] - G0_im[k] * R0_im[m] + G1_re[k] * R1_re[m] - G1_im[k] * R1_im[m];
-        X_im[k] += G0_re[k] * R0_im[m] + G0_im[k] * R0_re[m] + G1_re[k] * R1_im[m] + G1_im[k] * R1_re[m];
-      }
+      add_loads(G0_re + row, G0_im + row, G1_re + row, G1_im + row, R0_re, R0_im, R1_re, R1_im, X_re + row, X_im + row,
+                n_modes);
     }
     inverse_transform(Spectrum::kept, u.data(), mesh_rows.begin,
                       mesh_rows.end);  // destroys X: one solve_loaded per solve_free

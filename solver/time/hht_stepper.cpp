@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "linalg/vector_clones.hpp"
+
 namespace slidewave {
 
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const Eigen::SparseMatrix<double>& M_ff,
@@ -112,10 +114,12 @@ struct MassCoefficients {
 /// w r(n+1) + a' r(n); kPredict: also the next step's right-hand side. Restrict parameters and a plain loop,
 /// so that the compiler vectorizes it (the same operations per entry, so the same bits).
 template <bool kForces, bool kPredict>
-void update_mass_rows(const double* __restrict Ku_next, const double* __restrict Ku, const double* __restrict r_new,
-                      const double* __restrict r_old, const double* __restrict Kd, double* __restrict Ma,
-                      double* __restrict Mv, double* __restrict Mu, double* __restrict rhs, long n,
-                      const MassCoefficients& coefficients) {
+__attribute__((always_inline)) inline void update_mass_rows(const double* __restrict Ku_next,
+                                                            const double* __restrict Ku, const double* __restrict r_new,
+                                                            const double* __restrict r_old, const double* __restrict Kd,
+                                                            double* __restrict Ma, double* __restrict Mv,
+                                                            double* __restrict Mu, double* __restrict rhs, long n,
+                                                            const MassCoefficients& coefficients) {
   const MassCoefficients k = coefficients;
   const PredictorCoefficients& p = k.predictor;
   for (long i = 0; i < n; ++i) {
@@ -131,9 +135,11 @@ void update_mass_rows(const double* __restrict Ku_next, const double* __restrict
 
 /// Rows [begin, end) of the vectors of correct() through update_mass_rows.
 template <bool kForces, bool kPredict>
-void update_mass_rows_between(int begin, int end, const double* Ku_next, const double* Ku, const double* r_new,
-                              const double* r_old, const double* Kd, double* Ma, double* Mv, double* Mu, double* rhs,
-                              const MassCoefficients& k) {
+__attribute__((always_inline)) inline void update_mass_rows_between(int begin, int end, const double* Ku_next,
+                                                                    const double* Ku, const double* r_new,
+                                                                    const double* r_old, const double* Kd, double* Ma,
+                                                                    double* Mv, double* Mu, double* rhs,
+                                                                    const MassCoefficients& k) {
   update_mass_rows<kForces, kPredict>(Ku_next + begin, Ku + begin, kForces ? r_new + begin : nullptr,
                                       kForces ? r_old + begin : nullptr, Kd + begin, Ma + begin, Mv + begin, Mu + begin,
                                       rhs + begin, end - begin, k);
@@ -141,6 +147,7 @@ void update_mass_rows_between(int begin, int end, const double* Ku_next, const d
 
 }  // namespace
 
+SLIDEWAVE_VECTOR_CLONES
 void HHTStepper::predict(const HHTState& s, const Eigen::VectorXd& u_d_next) {
   if (predicted_ && u_d_next == u_d_next_) {  // done by the last correct(), from this state and this u_d
     predicted_ = false;
@@ -176,6 +183,7 @@ const Eigen::VectorXd& HHTStepper::solve_free() {
   return u_free_contact_;
 }
 
+SLIDEWAVE_VECTOR_CLONES
 void HHTStepper::correct(const Eigen::VectorXd& r_next, HHTState& s, const Eigen::VectorXd* u_d_following) {
   const int n_f = system_.n_free, n_c = system_.n_contact, n_d = system_.n_prescribed;
   const double a = hht_.alpha, dt = hht_.dt;
