@@ -142,7 +142,8 @@ int main(int argc, char** argv) {
     for (const int n : resolutions) {
       slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
       config.output.progress = slidewave::ProgressMode::never;
-      const slidewave::LayerModel model(config);
+      slidewave::LayerModel model(config);
+      model.stick_phase_in_wavenumbers = false;  // plain stepping, as before the stick phase was wired
       UntilFirstSlip plain;
       const slidewave::RunRecord record = slidewave::simulate(model, {}, &plain.stop, nullptr, &plain);
       const double plain_ms = 1e3 * plain.cpu_stick / static_cast<double>(plain.first_slip - 1);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 
 #include "model/layer_model.hpp"
 #include "model/loop_state_arrays.hpp"
@@ -17,9 +18,10 @@
 namespace slidewave {
 namespace {
 
-RunConfig paper_case(int n, double t_end) {
-  return testing::make_config(
-      {{"mesh", {{"elements_per_H", n}}}, {"time", {{"t_end", t_end}}}, {"output", {{"energy_decomposition", "hht"}}}});
+RunConfig paper_case(int n, double t_end, double hht_alpha = 0.1) {
+  return testing::make_config({{"mesh", {{"elements_per_H", n}}},
+                               {"time", {{"t_end", t_end}, {"hht_alpha", hht_alpha}}},
+                               {"output", {{"energy_decomposition", "hht"}}}});
 }
 
 /// First step solved by Gauss–Seidel: the first slip (-1: none).
@@ -43,8 +45,21 @@ double largest(const std::vector<double>& x) {
   return m;
 }
 
-TEST(StickPhaseRun, RecordsThePlainRunToRoundOffAndSlipsOnTheSameStep) {
-  const RunConfig config = paper_case(16, 800.0);
+/// A case of the agreement test: hht_alpha, and the bound on forces and tractions before the onset.
+struct AgreementCase {
+  const char* name;
+  double hht_alpha, force_bound;
+};
+
+// The paper's hht_alpha = 0.1: wavenumbers retire, and what round-off the two ways of stepping make differently
+// is damped (forces agree to ~3e-13). The trapezoidal rule (hht_alpha = 0): nothing decays and nothing retires;
+// that round-off is never forgotten and accumulates over the ~950 steps (forces agree to ~2.4e-10 of their largest;
+// the same before the stick phase carried its mass products), hence a bound ten times looser on forces there.
+class StickPhaseRunAlpha : public ::testing::TestWithParam<AgreementCase> {};
+
+TEST_P(StickPhaseRunAlpha, RecordsThePlainRunToRoundOffAndSlipsOnTheSameStep) {
+  const AgreementCase& c = GetParam();
+  const RunConfig config = paper_case(16, 800.0, c.hht_alpha);
   const LayerModel phased(config);
   LayerModel plain(config);
   plain.stick_phase_in_wavenumbers = false;
@@ -55,8 +70,10 @@ TEST(StickPhaseRun, RecordsThePlainRunToRoundOffAndSlipsOnTheSameStep) {
   // Forces against their largest value, energies against the largest elastic energy (the scale of their
   // round-off), slips against the preshear displacement.
   const GlobalSeries &ga = a.global, &gb = b.global;
-  EXPECT_LT(relative_difference(ga.T, gb.T, onset, largest(gb.T)), 1e-10);
-  EXPECT_LT(relative_difference(ga.N, gb.N, onset, largest(gb.N)), 1e-10);
+  const double T = relative_difference(ga.T, gb.T, onset, largest(gb.T)),
+               N = relative_difference(ga.N, gb.N, onset, largest(gb.N));
+  EXPECT_LT(T, c.force_bound);
+  EXPECT_LT(N, c.force_bound);
   const double energy = largest(gb.energy_elastic);
   for (const auto& [name, x, y] : {std::tuple{"kinetic", &ga.energy_kinetic, &gb.energy_kinetic},
                                    {"elastic", &ga.energy_elastic, &gb.energy_elastic},
@@ -67,11 +84,19 @@ TEST(StickPhaseRun, RecordsThePlainRunToRoundOffAndSlipsOnTheSameStep) {
   const InterfaceSeries &ia = a.interface, &ib = b.interface;
   const std::int64_t values =
       static_cast<std::int64_t>(onset / config.output.interface_stride) * ia.tangential_traction.n_cols;
-  EXPECT_LT(relative_difference(ia.tangential_traction.data, ib.tangential_traction.data, values,
-                                largest(ib.tangential_traction.data)),
-            1e-10);
+  const double tractions = relative_difference(ia.tangential_traction.data, ib.tangential_traction.data, values,
+                                               largest(ib.tangential_traction.data));
+  EXPECT_LT(tractions, c.force_bound);
   EXPECT_LT(relative_difference(ia.slip.data, ib.slip.data, values, std::fabs(b.u_x_preshear)), 1e-12);
+  std::printf("[stick phase vs plain, %s] onset step %lld: T %.2e, N %.2e, tractions %.2e\n", c.name,
+              static_cast<long long>(onset), T, N, tractions);
 }
+
+INSTANTIATE_TEST_SUITE_P(Alpha, StickPhaseRunAlpha,
+                         ::testing::Values(AgreementCase{"Paper", 0.1, 1e-10}, AgreementCase{"Trapezoidal", 0.0, 1e-9}),
+                         [](const ::testing::TestParamInfo<AgreementCase>& info) {
+                           return std::string(info.param.name);
+                         });
 
 /// Keeps the final state; stops the run after `stop_after` steps (0: never); may give a state to start from.
 class StateKeeper : public RunObserver {

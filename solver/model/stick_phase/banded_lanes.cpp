@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "linalg/vector_clones.hpp"
+
 namespace slidewave {
 
 BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
@@ -13,67 +15,66 @@ BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
       lanes(n_lanes),
       a(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0) {}
 
-void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate,
-                           double scale) const {
-  std::vector<double> sum_re(m_end), sum_im(m_end);
-  for (int r = r0; r < r1; ++r) {
-    double* __restrict s_re = sum_re.data();
-    double* __restrict s_im = sum_im.data();
-    std::fill_n(s_re, m_end, 0.0);
-    std::fill_n(s_im, m_end, 0.0);
-    for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
-      const double* a_k = a.data() + at(r, k, 0);
-      const double* x_re = x.re.data() + x.at(r + k, 0);
-      const double* x_im = x.im.data() + x.at(r + k, 0);
-      for (int m = 0; m < m_end; ++m) {
-        s_re[m] += a_k[m] * x_re[m];
-        s_im[m] += a_k[m] * x_im[m];
-      }
+namespace {
+
+constexpr int kMaxBandTerms = 15;
+
+/// One row of y = A x (accumulate: y += scale A x) over lanes [0, m_end), the band terms k = k0..k1 summed in
+/// that order from 0 for each lane (the bits of a sum kept per lane), K = k1 - k0 + 1 at compile time where
+/// it is the full band, so that the terms unroll and the loop over the lanes vectorizes without a scratch row.
+template <int K, bool kAccumulate>
+__attribute__((always_inline)) inline void multiply_row(const double* const* a_k, const double* const* x_re,
+                                                        const double* const* x_im, int n_k, double* __restrict y_re,
+                                                        double* __restrict y_im, int m_end, double scale) {
+  const int n = K > 0 ? K : n_k;
+  const double *a[kMaxBandTerms], *u[kMaxBandTerms], *w[kMaxBandTerms];  // local: no aliasing with y
+  for (int k = 0; k < n; ++k) {
+    a[k] = a_k[k];
+    u[k] = x_re[k];
+    w[k] = x_im[k];
+  }
+  for (int m = 0; m < m_end; ++m) {
+    double s_re = 0, s_im = 0;
+    for (int k = 0; k < n; ++k) {
+      s_re += a[k][m] * u[k][m];
+      s_im += a[k][m] * w[k][m];
     }
-    double* __restrict y_re = y.re.data() + y.at(r, 0);
-    double* __restrict y_im = y.im.data() + y.at(r, 0);
-    if (accumulate)
-      for (int m = 0; m < m_end; ++m) {
-        y_re[m] += scale * s_re[m];
-        y_im[m] += scale * s_im[m];
-      }
-    else
-      for (int m = 0; m < m_end; ++m) {
-        y_re[m] = s_re[m];
-        y_im[m] = s_im[m];
-      }
+    if constexpr (kAccumulate) {
+      y_re[m] += scale * s_re;
+      y_im[m] += scale * s_im;
+    } else {
+      y_re[m] = s_re;
+      y_im[m] = s_im;
+    }
   }
 }
 
-double BandedLanes::bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const {
-  std::vector<double> per_lane(m_end, 0.0);
-  double* __restrict sum = per_lane.data();
-  const bool quadratic = &x == &y;  // x^H A x: the symmetric band's upper half twice, the diagonal once
-  for (int r = 0; r < rows; ++r) {
-    const double* xr_re = x.re.data() + x.at(r, 0);
-    const double* xr_im = x.im.data() + x.at(r, 0);
-    if (quadratic) {
-      const double* d = a.data() + at(r, 0, 0);
-      for (int m = 0; m < m_end; ++m) sum[m] += d[m] * (xr_re[m] * xr_re[m] + xr_im[m] * xr_im[m]);
-      for (int k = 1; k <= p && r + k < rows; ++k) {
-        const double* a_k = a.data() + at(r, k, 0);
-        const double* y_re = x.re.data() + x.at(r + k, 0);
-        const double* y_im = x.im.data() + x.at(r + k, 0);
-        for (int m = 0; m < m_end; ++m) sum[m] += 2 * a_k[m] * (xr_re[m] * y_re[m] + xr_im[m] * y_im[m]);
-      }
-      continue;
+}  // namespace
+
+SLIDEWAVE_VECTOR_CLONES
+void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate,
+                           double scale) const {
+  if (2 * p + 1 > kMaxBandTerms) throw std::invalid_argument("BandedLanes::multiply: half-bandwidth above 7");
+  const double *a_k[kMaxBandTerms], *x_re[kMaxBandTerms], *x_im[kMaxBandTerms];
+  for (int r = r0; r < r1; ++r) {
+    int n_k = 0;
+    for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k, ++n_k) {
+      a_k[n_k] = a.data() + at(r, k, 0);
+      x_re[n_k] = x.re.data() + x.at(r + k, 0);
+      x_im[n_k] = x.im.data() + x.at(r + k, 0);
     }
-    for (int k = std::max(-p, -r); k <= p && r + k < rows; ++k) {
-      const double* a_k = a.data() + at(r, k, 0);
-      const double* y_re = y.re.data() + y.at(r + k, 0);
-      const double* y_im = y.im.data() + y.at(r + k, 0);
-      for (int m = 0; m < m_end; ++m)  // Re(conj(x) (a y))
-        sum[m] += a_k[m] * (xr_re[m] * y_re[m] + xr_im[m] * y_im[m]);
-    }
+    double* y_re = y.re.data() + y.at(r, 0);
+    double* y_im = y.im.data() + y.at(r, 0);
+    const bool full = n_k == 7;  // half-bandwidth 3 (Q4), away from the ends
+    if (full && accumulate)
+      multiply_row<7, true>(a_k, x_re, x_im, n_k, y_re, y_im, m_end, scale);
+    else if (full)
+      multiply_row<7, false>(a_k, x_re, x_im, n_k, y_re, y_im, m_end, scale);
+    else if (accumulate)
+      multiply_row<0, true>(a_k, x_re, x_im, n_k, y_re, y_im, m_end, scale);
+    else
+      multiply_row<0, false>(a_k, x_re, x_im, n_k, y_re, y_im, m_end, scale);
   }
-  double total = 0;
-  for (int m = 0; m < m_end; ++m) total += weight[m] * sum[m];
-  return total;
 }
 
 BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
@@ -109,6 +110,7 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
   }
 }
 
+SLIDEWAVE_VECTOR_CLONES
 void BandedLaneFactor::solve(LaneVectors& x, int m_end) const {
   const int p = p_, lanes = lanes_;
   for (int part = 0; part < 2; ++part) {  // a real matrix: the real and imaginary parts apart

@@ -38,8 +38,6 @@ struct BandedLanes {
   /// y(rows [r0, r1)) = A x for lanes [0, m_end) (x and y distinct); with accumulate, y += scale A x.
   void multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate = false,
                 double scale = 1) const;
-  /// sum over lanes m < m_end of weight[m] Re(x_m^H A_m y_m).
-  double bilinear(const LaneVectors& x, const LaneVectors& y, int m_end, const double* weight) const;
 };
 
 /// L D L^T of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and

@@ -1,5 +1,9 @@
 #include "model/stick_phase/stick_phase_ledger.hpp"
 
+#include <array>
+
+#include "linalg/vector_clones.hpp"
+
 namespace slidewave {
 namespace {
 
@@ -8,18 +12,6 @@ Eigen::VectorXd lane_zero(const LaneVectors& X) {
   Eigen::VectorXd x(X.rows);
   for (int r = 0; r < X.rows; ++r) x(r) = lane_zero_value(X, r);
   return x;
-}
-
-/// x + c y on lanes [0, n).
-LaneVectors combine(const LaneVectors& x, const LaneVectors& y, double c, int n) {
-  LaneVectors z(x.rows, x.lanes);
-  for (int r = 0; r < x.rows; ++r)
-    for (int m = 0; m < n; ++m) {
-      const std::size_t e = x.at(r, m);
-      z.re[e] = x.re[e] + c * y.re[e];
-      z.im[e] = x.im[e] + c * y.im[e];
-    }
-  return z;
 }
 
 }  // namespace
@@ -31,35 +23,49 @@ StickPhaseLedger::StickPhaseLedger(const WavenumberBlocks& blocks, const HHTCoef
   kinetic_top_ = blocks.n_x * v_top.dot(blocks.M_dd0 * v_top);
 }
 
-double StickPhaseLedger::dot(const LaneVectors& X, const LaneVectors* X2, double cx, const LaneVectors& Y,
-                             const LaneVectors* Y2, double cy, int n) const {
-  const double* w = blocks_.weight.data();
-  double sum = 0;
-  for (int r = 0; r < X.rows; ++r) {
-    const std::size_t e = X.at(r, 0);
-    const double *x_re = X.re.data() + e, *x_im = X.im.data() + e, *y_re = Y.re.data() + e, *y_im = Y.im.data() + e;
-    const double* x2_re = X2 ? X2->re.data() + e : nullptr;
-    const double* x2_im = X2 ? X2->im.data() + e : nullptr;
-    const double* y2_re = Y2 ? Y2->re.data() + e : nullptr;
-    const double* y2_im = Y2 ? Y2->im.data() + e : nullptr;
-    for (int m = 0; m < n; ++m) {
-      const double a_re = X2 ? x_re[m] + cx * x2_re[m] : x_re[m], a_im = X2 ? x_im[m] + cx * x2_im[m] : x_im[m];
-      const double b_re = Y2 ? y_re[m] + cy * y2_re[m] : y_re[m], b_im = Y2 ? y_im[m] + cy * y2_im[m] : y_im[m];
-      sum += w[m] * (a_re * b_re + a_im * b_im);
-    }
+double StickPhaseLedger::dot(const LaneVectors& X, const LaneVectors& Y, int n) const {
+  double sums[1];
+  const std::array<LaneProduct, 1> product{{{&X, nullptr, 1, &Y, nullptr, 1}}};
+  lane_products(product.data(), 1, n, sums);
+  return sums[0];
+}
+
+SLIDEWAVE_VECTOR_CLONES
+void StickPhaseLedger::lane_products(const LaneProduct* products, int count, int n, double* sums) const {
+  // Per-lane partial sums (independent, so the loop over the lanes vectorizes), weighted at the end.
+  per_lane_.assign(static_cast<std::size_t>(count) * n, 0.0);
+  for (int q = 0; q < count; ++q) {
+    const LaneProduct& p = products[q];
+    double* __restrict sum = per_lane_.data() + static_cast<std::size_t>(q) * n;
+    for (int r = 0; r < p.X->rows; ++r)
+      for (int part = 0; part < 2; ++part) {
+        const std::size_t e = p.X->at(r, 0);
+        const auto row = [part, e](const LaneVectors* Z) { return Z ? (part ? Z->im : Z->re).data() + e : nullptr; };
+        const double *x = row(p.X), *x2 = row(p.X2), *y = row(p.Y), *y2 = row(p.Y2);
+        const double cx = p.cx, cy = p.cy;
+        if (x2 && y2)
+          for (int m = 0; m < n; ++m) sum[m] += (x[m] + cx * x2[m]) * (y[m] + cy * y2[m]);
+        else
+          for (int m = 0; m < n; ++m) sum[m] += x[m] * y[m];
+      }
   }
-  return sum;
+  const double* w = blocks_.weight.data();
+  for (int q = 0; q < count; ++q) {
+    const double* sum = per_lane_.data() + static_cast<std::size_t>(q) * n;
+    double total = 0;
+    for (int m = 0; m < n; ++m) total += w[m] * sum[m];
+    sums[q] = total;
+  }
 }
 
 double StickPhaseLedger::kinetic(const ModeState& x, int n_active) const {
-  return 0.5 * (blocks_.M.bilinear(x.V, x.V, n_active, blocks_.weight.data()) + 2 * M_fd_v_top_.dot(lane_zero(x.V)) +
-                kinetic_top_);
+  return 0.5 * (dot(x.V, x.MV, n_active) + 2 * M_fd_v_top_.dot(lane_zero(x.V)) + kinetic_top_);
 }
 
 double StickPhaseLedger::elastic(const ModeState& x, int n_active, double retired_elastic,
                                  const Eigen::Vector2d& u_top) const {
   const Eigen::Vector2d top = blocks_.K_fd0.transpose() * lane_zero(x.U) + blocks_.n_x * (blocks_.K_dd0 * u_top);
-  return 0.5 * (dot(x.U, nullptr, 0, x.KU, nullptr, 0, n_active) + u_top.dot(top)) + retired_elastic;
+  return 0.5 * (dot(x.U, x.KU, n_active) + u_top.dot(top)) + retired_elastic;
 }
 
 Eigen::Vector2d StickPhaseLedger::top_force(const ModeState& x, const Eigen::Vector2d& u_top) const {
@@ -78,16 +84,17 @@ void StickPhaseLedger::book_step(const ModeState& before, const ModeState& after
   sums.work_external +=
       0.5 * (top_force(before, u_top_before) + top_force(after, u_top_after)).dot(u_top_after - u_top_before);
   if (!sums.hht.on()) return;
-  // The three HHT terms of EnergyLedger::book_hht_terms, each a quadratic form of the two states.
+  // The three HHT terms of EnergyLedger::book_hht_terms, each a quadratic form of the two states, the mass
+  // products carried: v.M da = (v_b + v_a).(M a_a - M a_b), da.M a = (a_a - a_b).(M a_b + M a_a).
   const double dt = hht_.dt;
-  const LaneVectors v_sum = combine(before.V, after.V, 1, n_active),
-                    a_change = combine(after.A, before.A, -1, n_active),
-                    a_sum = combine(before.A, after.A, 1, n_active);
-  const double* w = blocks_.weight.data();
-  const double v_M_da = 0.5 * blocks_.M.bilinear(v_sum, a_change, n_active, w) +
-                        M_fd_v_top_.dot(lane_zero(after.A) - lane_zero(before.A));
-  const double da_M_a = 0.5 * blocks_.M.bilinear(a_change, a_sum, n_active, w);
-  const double du_s = 0.5 * dot(after.U, &before.U, -1, before.S, &after.S, 1, n_active);
+  const std::array<LaneProduct, 3> forms{{{&before.V, &after.V, 1, &after.MA, &before.MA, -1},
+                                          {&after.A, &before.A, -1, &before.MA, &after.MA, 1},
+                                          {&after.U, &before.U, -1, &before.S, &after.S, 1}}};
+  double form[3];
+  lane_products(forms.data(), 3, n_active, form);
+  const double v_M_da = 0.5 * form[0] + M_fd_v_top_.dot(lane_zero(after.A) - lane_zero(before.A));
+  const double da_M_a = 0.5 * form[1];
+  const double du_s = 0.5 * form[2];
   sums.hht.gamma -= dt * (hht_.gamma - 0.5) * v_M_da;
   sums.hht.beta += dt * dt * (hht_.beta - 0.5 * hht_.gamma) * da_M_a;
   sums.hht.shift -= du_s;

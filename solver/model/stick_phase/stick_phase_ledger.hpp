@@ -6,6 +6,7 @@
 // x-uniform). Retired wavenumbers sit at their static state: no velocity, no acceleration, no change, so
 // they add a constant to u.K u / 2 and nothing else.
 #include <Eigen/Dense>
+#include <vector>
 
 #include "model/energy_ledger.hpp"
 #include "model/stick_phase/wavenumber_blocks.hpp"
@@ -31,14 +32,22 @@ class StickPhaseLedger {
                  const Eigen::VectorXd& r_after, EnergySums& sums) const;
 
  private:
-  /// sum over lanes m < n of weight(m) Re((X + cx X2)_m^H (Y + cy Y2)_m) (X2, Y2 may be null).
-  double dot(const LaneVectors& X, const LaneVectors* X2, double cx, const LaneVectors& Y, const LaneVectors* Y2,
-             double cy, int n) const;
-
+  /// One form sum over lanes m < n of weight(m) Re((X + cx X2)_m^H (Y + cy Y2)_m) (X2, Y2 both null or both set).
+  struct LaneProduct {
+    const LaneVectors *X, *X2;
+    double cx;
+    const LaneVectors *Y, *Y2;
+    double cy;
+  };
+  /// sums[q] = the form of products[q], q < count, in one pass over the rows per form.
+  void lane_products(const LaneProduct* products, int count, int n, double* sums) const;
+  /// sum over lanes m < n of weight(m) Re(X_m^H Y_m).
+  double dot(const LaneVectors& X, const LaneVectors& Y, int n) const;
   const WavenumberBlocks& blocks_;
   HHTCoefficients hht_;
-  Eigen::VectorXd M_fd_v_top_;  ///< M_fd v_top per free row of a column (x-uniform)
-  double kinetic_top_;          ///< v_top.M_top v_top (all top DOFs)
+  Eigen::VectorXd M_fd_v_top_;            ///< M_fd v_top per free row of a column (x-uniform)
+  double kinetic_top_;                    ///< v_top.M_top v_top (all top DOFs)
+  mutable std::vector<double> per_lane_;  ///< scratch of lane_products
 };
 
 }  // namespace slidewave

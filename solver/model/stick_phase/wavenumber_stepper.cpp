@@ -5,6 +5,8 @@
 #include <complex>
 #include <utility>
 
+#include "linalg/vector_clones.hpp"
+
 namespace slidewave {
 namespace {
 
@@ -78,10 +80,10 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
       state_a_(blocks.s, blocks.lanes),
       state_b_(blocks.s, blocks.lanes),
       hold_load_(blocks.s, blocks.lanes),
-      U_tilde_(blocks.s, blocks.lanes),
       MA_contact_(2, blocks.lanes),
       U_static_(blocks.s, blocks.lanes),
-      KU_static_(blocks.s, blocks.lanes) {
+      KU_static_(blocks.s, blocks.lanes),
+      MU_static_(blocks.s, blocks.lanes) {
   // Transient growth of a lane's distance from its static state (docs/stick-phase.md): HHT's amplification
   // of one frequency Omega = omega dt, in the units (u, dt v, beta dt^2 a), grows a start by at most
   // max(6.3, 1.65 / Omega) (measured over Omega, all powers), times 3 >= sqrt(cond M) from the modes to the DOFs.
@@ -97,6 +99,9 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   transform.forward(layer.acc.data(), x.A);
   transform.forward(layer.Ku.data(), x.KU);
   transform.forward(layer.r.data(), x.R);
+  transform.forward(layer.Mu_f.data(), x.MU);
+  transform.forward(layer.Mv_f.data(), x.MV);
+  transform.forward(layer.Ma_f.data(), x.MA);
   track_shift_ = shift_f != nullptr;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
   state_b_ = state_a_;
@@ -114,38 +119,35 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   for (int c = 0; c < 2; ++c)
     for (int m = 0; m < lanes; ++m) U_static_.set(c, m, hold_.get(c, m));
   blocks_.K.multiply(U_static_, KU_static_, 0, s, lanes);
+  blocks_.M.multiply(U_static_, MU_static_, 0, s, lanes);
   n_active_ = lanes;
   retired_elastic_ = 0;
   u_scale_ = layer.u.head(2 * (s / 2) * blocks_.n_x).lpNorm<Eigen::Infinity>();
   r_scale_ = layer.r.lpNorm<Eigen::Infinity>();
 }
 
+SLIDEWAVE_VECTOR_CLONES
 void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
   const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = blocks_.lanes;
   const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
-  const double g = hht_.gamma, g_old = 1 - hht_.gamma;
+  const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
   const ModeState& x = *current_;
   ModeState& y = *next_;
-  // Predictor u~ = u + dt v + c a; the interior right-hand side b M u~ - a K u(n) + the held contact's load.
-  for (int r = 0; r < s; ++r)
+  // The interior right-hand side b M u~ - a K u(n) + the held contact's load, M u~ = M u + dt M v + c M a.
+  for (int r = 2; r < s; ++r)
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* u = (part ? x.U.im : x.U.re).data() + e;
-      const double* v = (part ? x.V.im : x.V.re).data() + e;
-      const double* acc = (part ? x.A.im : x.A.re).data() + e;
+      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
+      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
+      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      double* __restrict ut = (part ? U_tilde_.im : U_tilde_.re).data() + e;
       double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
-      for (int m = 0; m < me; ++m) {
-        ut[m] = u[m] + dt * v[m] + c2 * acc[m];
-        rhs[m] = -a * Ku[m];
-      }
-      if (r >= 2 && r < 2 + blocks_.K.p) {  // the held contact DOFs load the rows within the band of them
+      for (int m = 0; m < me; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
+      if (r < 2 + blocks_.K.p) {  // the held contact DOFs load the rows within the band of them
         const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
         for (int m = 0; m < me; ++m) rhs[m] += load[m];
       }
     }
-  blocks_.M.multiply(U_tilde_, y.U, 2, s, me, true, b);
   for (int r = 2; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
     add_to_lane_zero(y.U, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   A_eff_interior_.solve(y.U, me);
@@ -153,18 +155,19 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
     std::copy_n(hold_.re.data() + hold_.at(c, 0), me, y.U.re.data() + y.U.at(c, 0));
     std::copy_n(hold_.im.data() + hold_.at(c, 0), me, y.U.im.data() + y.U.at(c, 0));
   }
-  // a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)).
+  // u~ = u + dt v + c a,  a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)).
   for (int r = 0; r < s; ++r)
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
       const double* u_next = (part ? y.U.im : y.U.re).data() + e;
-      const double* ut = (part ? U_tilde_.im : U_tilde_.re).data() + e;
+      const double* u = (part ? x.U.im : x.U.re).data() + e;
       const double* acc = (part ? x.A.im : x.A.re).data() + e;
       const double* v = (part ? x.V.im : x.V.re).data() + e;
       double* __restrict acc_next = (part ? y.A.im : y.A.re).data() + e;
       double* __restrict v_next = (part ? y.V.im : y.V.re).data() + e;
       for (int m = 0; m < me; ++m) {
-        acc_next[m] = b * (u_next[m] - ut[m]);
+        const double u_tilde = u[m] + dt * v[m] + c2 * acc[m];
+        acc_next[m] = b * (u_next[m] - u_tilde);
         v_next[m] = v[m] + dt * (g_old * acc[m] + g * acc_next[m]);
       }
     }
@@ -181,6 +184,30 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       const double* R = (part ? x.R.im : x.R.re).data() + e;
       double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e;
       for (int m = 0; m < me; ++m) R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
+    }
+  // The mass products: M a(n+1) of the interior rows from their equation of motion,
+  // -(1-a) K u(n+1) - a K u(n) (K u with the top's share; the top has a = 0), of the contact rows the band
+  // product the reactions came from; M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
+  for (int r = 0; r < s; ++r)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(r) * lanes;
+      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
+      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
+      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
+      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
+      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
+      double* __restrict Ma_next = (part ? y.MA.im : y.MA.re).data() + e;
+      double* __restrict Mv_next = (part ? y.MV.im : y.MV.re).data() + e;
+      double* __restrict Mu_next = (part ? y.MU.im : y.MU.re).data() + e;
+      if (r < 2)
+        std::copy_n((part ? MA_contact_.im : MA_contact_.re).data() + e, me, Ma_next);
+      else
+        for (int m = 0; m < me; ++m) Ma_next[m] = -(1 - a) * Ku_next[m] - a * Ku[m];
+      for (int m = 0; m < me; ++m) {
+        const double Mu_tilde = Mu[m] + dt * Mv[m] + c2 * Ma[m];
+        Mv_next[m] = Mv[m] + dt * (g_old * Ma[m] + g * Ma_next[m]);
+        Mu_next[m] = Mu_tilde + beta_dt2 * Ma_next[m];
+      }
     }
   if (!track_shift_) return;
   // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
@@ -225,7 +252,8 @@ void WavenumberStepper::retire(int m) {
     for (int r = 0; r < blocks_.s; ++r) {
       x->U.set(r, m, U_static_.get(r, m));
       x->KU.set(r, m, KU_static_.get(r, m));
-      for (LaneVectors* zero : {&x->V, &x->A, &x->S}) zero->set(r, m, 0.0);
+      x->MU.set(r, m, MU_static_.get(r, m));
+      for (LaneVectors* zero : {&x->V, &x->A, &x->S, &x->MV, &x->MA}) zero->set(r, m, 0.0);
     }
     for (int c = 0; c < 2; ++c) x->R.set(c, m, KU_static_.get(c, m));
   }

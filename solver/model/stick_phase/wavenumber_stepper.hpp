@@ -23,13 +23,24 @@
 namespace slidewave {
 
 /// The layer's state in wavenumbers (free rows; the top is x-uniform and known). The mass products are
-/// not carried (time/hht_stepper.hpp carries them): a step is bound by memory traffic, and a band product
-/// of a vector it reads anyway costs less than reading and writing three more.
+/// carried as time/hht_stepper.hpp carries them (Newmark relations and the equation of motion): the
+/// predictor's M u~ and the ledger's forms v.M v, v.M da, da.M a are then sums over the rows, and the
+/// step's only band products are K u and the two contact rows of M a (the reactions).
 struct ModeState {
   LaneVectors U, V, A, KU;  ///< u, v, a, K u of the free rows (K u with the top's share)
+  LaneVectors MU, MV, MA;   ///< M u, M v, M a of the free rows (M of the free DOFs: the top has a = 0)
   LaneVectors S;            ///< the HHT shift term s (model/energy_ledger.hpp), if booked
   LaneVectors R;            ///< contact reactions (2 rows)
-  ModeState(int s, int lanes) : U(s, lanes), V(s, lanes), A(s, lanes), KU(s, lanes), S(s, lanes), R(2, lanes) {}
+  ModeState(int s, int lanes)
+      : U(s, lanes),
+        V(s, lanes),
+        A(s, lanes),
+        KU(s, lanes),
+        MU(s, lanes),
+        MV(s, lanes),
+        MA(s, lanes),
+        S(s, lanes),
+        R(2, lanes) {}
 };
 
 class WavenumberStepper {
@@ -41,8 +52,8 @@ class WavenumberStepper {
                     double retire_tolerance);
 
   const WavenumberBlocks& blocks() const { return blocks_; }
-  /// The state at t = 0 from the layer's (its free rows), with shift_f the ledger's s (or null); the held
-  /// contact values U_c = (u_x(0), 0) and the static states.
+  /// The state at t = 0 from the layer's (its free rows and their mass products), with shift_f the ledger's
+  /// s (or null); the held contact values U_c = (u_x(0), 0) and the static states.
   void start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform);
   /// One step into next() (current() unchanged), the top displaced to u_top_next (one node's x, y).
   void step(const Eigen::Vector2d& u_top_next);
@@ -71,8 +82,8 @@ class WavenumberStepper {
   ModeState state_a_, state_b_;
   ModeState* current_ = &state_a_;
   ModeState* next_ = &state_b_;
-  LaneVectors hold_, hold_load_, U_tilde_, MA_contact_;  ///< hold_: U_c
-  LaneVectors U_static_, KU_static_;                     ///< the static states (R* = rows 0, 1 of KU*)
+  LaneVectors hold_, hold_load_, MA_contact_;     ///< hold_: U_c
+  LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states (R* = rows 0, 1 of KU*)
   int n_active_ = 0;
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
