@@ -40,6 +40,10 @@
 // thread counts keep the results bit-identical from run to run.
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 extern "C" void omp_set_num_threads(int) __attribute__((weak));
+// OpenBLAS starts its worker threads when it is loaded (one per core), before main; idle, each spins on
+// sched_yield for ~0.1 s of CPU. With one thread they are stopped at once (OpenBLAS restarts them if
+// a later call asks for more).
+extern "C" int blas_thread_shutdown_() __attribute__((weak));
 
 namespace {
 
@@ -143,6 +147,7 @@ int main(int argc, char** argv) {
 
   // 6. Build the model and run the three stages.
   if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
+  if (config.numerics.threads == 1 && blas_thread_shutdown_) blas_thread_shutdown_();
   if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
   const std::atomic<bool>* stop = install_stop_handlers(kInterrupted, lock_path_for(output_path));
   std::unique_ptr<RunSession> session;

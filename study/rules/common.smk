@@ -18,10 +18,10 @@ from snakemake.exceptions import WorkflowError
 # Scripts run as `-m study.*`, `-m analysis` and figures/*.py import from the repository root,
 # also when --directory puts the results elsewhere.
 os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, [str(REPO), os.environ.get("PYTHONPATH")]))
-# OpenBLAS starts a thread per core in every process that loads it: each `slidewave run` paid 0.1 s of
-# system CPU for threads its spectral path never uses (~40 s of `all` on 2 cores; the same bits either
-# way), and the in-process measure needs none. Set here, not in a rule's shell, so that existing runs are not
-# rerun for a changed rule; a value in the environment wins.
+# OpenBLAS starts a thread per core in every process that loads it, and idle each spins for ~0.1 s of system
+# CPU: `slidewave run` now stops them itself (solver/main.cpp, one thread), the Python jobs (numpy) get one
+# thread from this (~40 s of `all` on 2 cores before; the same bits either way). Set here, not in a rule's
+# shell, so that existing runs are not rerun for a changed rule; a value in the environment wins.
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 wildcard_constraints:
