@@ -110,29 +110,72 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
   }
 }
 
+namespace {
+
+/// One row of a sweep on both parts at once: x = x * scale (scale null: 1), then x -= l_k b_k for k < n_k,
+/// in that order, per lane (the operations of a sweep that subtracts one band term at a time, with one pass
+/// over the row instead of one per term and part). K = n_k at compile time for a full band.
+template <int K>
+__attribute__((always_inline)) inline void sweep_row(double* __restrict x_re, double* __restrict x_im,
+                                                     const double* scale, const double* const* l,
+                                                     const double* const* b_re, const double* const* b_im, int n_k,
+                                                     int m_end) {
+  const int n = K > 0 ? K : n_k;
+  const double *L[kMaxBandTerms], *B_re[kMaxBandTerms], *B_im[kMaxBandTerms];  // local: no aliasing with x
+  for (int k = 0; k < n; ++k) {
+    L[k] = l[k];
+    B_re[k] = b_re[k];
+    B_im[k] = b_im[k];
+  }
+  for (int m = 0; m < m_end; ++m) {
+    double a_re = x_re[m], a_im = x_im[m];
+    if (scale) {
+      a_re *= scale[m];
+      a_im *= scale[m];
+    }
+    for (int k = 0; k < n; ++k) {
+      a_re -= L[k][m] * B_re[k][m];
+      a_im -= L[k][m] * B_im[k][m];
+    }
+    x_re[m] = a_re;
+    x_im[m] = a_im;
+  }
+}
+
+}  // namespace
+
 SLIDEWAVE_VECTOR_CLONES
 void BandedLaneFactor::solve(LaneVectors& x, int m_end) const {
+  // A real matrix: the real and imaginary parts are solved apart, in the same loops.
   const int p = p_, lanes = lanes_;
-  for (int part = 0; part < 2; ++part) {  // a real matrix: the real and imaginary parts apart
-    double* y = (part ? x.im : x.re).data() + x.at(first_, 0);
-    for (int r = 0; r < n_; ++r) {  // L y = b
-      double* __restrict out = y + static_cast<std::size_t>(r) * lanes;
-      for (int k = 1; k <= p && k <= r; ++k) {
-        const double* l = L_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
-        const double* b = out - static_cast<std::size_t>(k) * lanes;
-        for (int m = 0; m < m_end; ++m) out[m] -= l[m] * b[m];
-      }
+  if (p > kMaxBandTerms) throw std::invalid_argument("BandedLaneFactor::solve: half-bandwidth above 15");
+  double* y_re = x.re.data() + x.at(first_, 0);
+  double* y_im = x.im.data() + x.at(first_, 0);
+  const double *l[kMaxBandTerms], *b_re[kMaxBandTerms], *b_im[kMaxBandTerms];
+  const auto row = [lanes](double* y, int r) { return y + static_cast<std::size_t>(r) * lanes; };
+  const auto sweep = [&](int r, const double* scale, int n_k) {
+    if (n_k == 3)
+      sweep_row<3>(row(y_re, r), row(y_im, r), scale, l, b_re, b_im, n_k, m_end);
+    else
+      sweep_row<0>(row(y_re, r), row(y_im, r), scale, l, b_re, b_im, n_k, m_end);
+  };
+  for (int r = 0; r < n_; ++r) {  // L y = b
+    int n_k = 0;
+    for (int k = 1; k <= p && k <= r; ++k, ++n_k) {
+      l[n_k] = L_.data() + (static_cast<std::size_t>(r) * p + k - 1) * lanes;
+      b_re[n_k] = row(y_re, r - k);
+      b_im[n_k] = row(y_im, r - k);
     }
-    for (int r = n_ - 1; r >= 0; --r) {  // x = D^-1 y - L^T x
-      double* __restrict out = y + static_cast<std::size_t>(r) * lanes;
-      const double* d = inv_D_.data() + static_cast<std::size_t>(r) * lanes;
-      for (int m = 0; m < m_end; ++m) out[m] *= d[m];
-      for (int k = 1; k <= p && r + k < n_; ++k) {
-        const double* l = L_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
-        const double* b = out + static_cast<std::size_t>(k) * lanes;
-        for (int m = 0; m < m_end; ++m) out[m] -= l[m] * b[m];
-      }
+    if (n_k > 0) sweep(r, nullptr, n_k);
+  }
+  for (int r = n_ - 1; r >= 0; --r) {  // x = D^-1 y - L^T x
+    int n_k = 0;
+    for (int k = 1; k <= p && r + k < n_; ++k, ++n_k) {
+      l[n_k] = L_.data() + (static_cast<std::size_t>(r + k) * p + k - 1) * lanes;
+      b_re[n_k] = row(y_re, r + k);
+      b_im[n_k] = row(y_im, r + k);
     }
+    sweep(r, inv_D_.data() + static_cast<std::size_t>(r) * lanes, n_k);
   }
 }
 
