@@ -19,18 +19,20 @@ from solver_runs import solver_or_skip
 REPO = Path(__file__).resolve().parents[2]
 SNAKEMAKE = os.environ.get("SLIDEWAVE_SNAKEMAKE", "/usr/bin/snakemake")
 
-# Two H/32 points with a small time step: about 13000 steps each (3 s of CPU), long enough to be
-# stopped in the middle also on an idle machine.
+# Two H/32 points with a small time step that slip early (f = 0.5): about 38000 steps each, ~3 s of CPU,
+# long enough to be stopped in the middle also on an idle machine. (A point at f = 1.5 sticks until
+# ~750 s: since the stick phase is stepped in wavenumbers, its 600 s took ~0.2 s and it could end before
+# the signal.)
 SWEEP = "faults_interrupted"
 CONFIG = f"""
 sweeps:
   {SWEEP}:
     description: two H/32 points with a small time step (fault test of an interrupted sweep)
-    fixed: {{elements_per_H: 32, dt_times_cs: 0.03}}
+    fixed: {{elements_per_H: 32, dt_times_cs: 0.03, f: 0.5}}
     points:
-      - {{nu: 0.2, f: 1.5}}
-      - {{nu: 0.2, f: 0.5}}
-    run_length: {{t_end: 600.0, stop_after_opening_transits: null}}
+      - {{nu: 0.2}}
+      - {{nu: 0.3}}
+    run_length: {{t_end: 1800.0, stop_after_opening_transits: null}}
     products: []
 """
 
