@@ -30,6 +30,7 @@ void StickPhase::start(const LoopState& loop) {
   u_contact_ = loop.dynamics.u.head(layer_.n_contact_dofs);
   u_contact_held_.resize(u_contact_.size());
   du_contact_.resize(u_contact_.size());
+  contact_held_ = false;
 }
 
 bool StickPhase::step(const FrictionBounds& bounds) {
@@ -40,14 +41,22 @@ bool StickPhase::step(const FrictionBounds& bounds) {
     const double r_x = r_trial_(2 * k), r_y = r_trial_(2 * k + 1);
     if (!(r_y >= 0 && std::fabs(r_x) <= bounds.bound(static_cast<int>(k), r_y))) return false;
   }
-  transform_.inverse(after.U, 1, u_contact_held_.data());
-  du_contact_ = u_contact_held_ - u_contact_;
+  // The contact rows are held: they move on the first step only (u_y from the preload's round-off to 0),
+  // and stay the same bits after it, so their increment is transformed once.
+  if (!contact_held_) {
+    transform_.inverse(after.U, 1, u_contact_held_.data());
+    du_contact_ = u_contact_held_ - u_contact_;
+  }
   ledger_.book_step(before, after, stepper_.n_active(), top_after(step_), top_after(step_ + 1), du_contact_, r_,
                     r_trial_, sums_);
   stepper_.commit();
   ++step_;
   r_ = r_trial_;
-  u_contact_.swap(u_contact_held_);
+  if (!contact_held_) {
+    u_contact_.swap(u_contact_held_);
+    du_contact_.setZero();
+    contact_held_ = true;
+  }
   return true;
 }
 

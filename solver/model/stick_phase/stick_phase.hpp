@@ -65,6 +65,7 @@ class StickPhase {
   std::int64_t step_ = 0;
   EnergySums sums_;
   Eigen::VectorXd r_, r_trial_, u_contact_, u_contact_held_, du_contact_;
+  bool contact_held_ = false;  ///< the first step has moved the contact rows to their held values
 };
 
 }  // namespace slidewave
