@@ -27,17 +27,11 @@ __attribute__((always_inline)) inline void multiply_row(const double* const* a_k
                                                         const double* const* x_im, int n_k, double* __restrict y_re,
                                                         double* __restrict y_im, int m_end, double scale) {
   const int n = K > 0 ? K : n_k;
-  const double *a[kMaxBandTerms], *u[kMaxBandTerms], *w[kMaxBandTerms];  // local: no aliasing with y
-  for (int k = 0; k < n; ++k) {
-    a[k] = a_k[k];
-    u[k] = x_re[k];
-    w[k] = x_im[k];
-  }
   for (int m = 0; m < m_end; ++m) {
     double s_re = 0, s_im = 0;
     for (int k = 0; k < n; ++k) {
-      s_re += a[k][m] * u[k][m];
-      s_im += a[k][m] * w[k][m];
+      s_re += a_k[k][m] * x_re[k][m];
+      s_im += a_k[k][m] * x_im[k][m];
     }
     if constexpr (kAccumulate) {
       y_re[m] += scale * s_re;
@@ -121,12 +115,6 @@ __attribute__((always_inline)) inline void sweep_row(double* __restrict x_re, do
                                                      const double* const* b_re, const double* const* b_im, int n_k,
                                                      int m_end) {
   const int n = K > 0 ? K : n_k;
-  const double *L[kMaxBandTerms], *B_re[kMaxBandTerms], *B_im[kMaxBandTerms];  // local: no aliasing with x
-  for (int k = 0; k < n; ++k) {
-    L[k] = l[k];
-    B_re[k] = b_re[k];
-    B_im[k] = b_im[k];
-  }
   for (int m = 0; m < m_end; ++m) {
     double a_re = x_re[m], a_im = x_im[m];
     if (scale) {
@@ -134,8 +122,8 @@ __attribute__((always_inline)) inline void sweep_row(double* __restrict x_re, do
       a_im *= scale[m];
     }
     for (int k = 0; k < n; ++k) {
-      a_re -= L[k][m] * B_re[k][m];
-      a_im -= L[k][m] * B_im[k][m];
+      a_re -= l[k][m] * b_re[k][m];
+      a_im -= l[k][m] * b_im[k][m];
     }
     x_re[m] = a_re;
     x_im[m] = a_im;
