@@ -16,17 +16,20 @@
 namespace slidewave {
 
 LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
-  K = assemble_uniform(mesh, quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration));
-  M = assemble_uniform(mesh, quad4_mass(c.material.rho, d.h, c.mesh.mass));
   n_free = mesh.n_free();
   n_top = mesh.n_top();
   n_contact_dofs = 2 * mesh.n_contact();
-  K_ff = K.topLeftCorner(n_free, n_free);
-  M_ff = M.topLeftCorner(n_free, n_free);
-  M_ff_rows = M_ff;
-  K_fd = K.topRightCorner(n_free, n_top);
-  M_fd = M.topRightCorner(n_free, n_top);
-  M_top_rows = M.bottomRows(n_top);
+  const Matrix8 Ke = quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration);
+  const Matrix8 Me = quad4_mass(c.material.rho, d.h, c.mesh.mass);
+  const DofRange all{0, mesh.n_dofs()}, free{0, n_free}, top{n_free, mesh.n_dofs()};
+  K = assemble_uniform_rows(mesh, Ke, all, all);
+  M = assemble_uniform_rows(mesh, Me, all, all);
+  K_ff = assemble_uniform_columns(mesh, Ke, free, free);
+  M_ff = assemble_uniform_columns(mesh, Me, free, free);
+  M_ff_rows = assemble_uniform_rows(mesh, Me, free, free);
+  K_fd = assemble_uniform_rows(mesh, Ke, free, top);
+  M_fd = assemble_uniform_rows(mesh, Me, free, top);
+  M_top_rows = assemble_uniform_rows(mesh, Me, top, all);
   if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
 }
 

@@ -8,14 +8,12 @@
 
 #include "config/run_config.hpp"
 #include "contact/coulomb_local.hpp"
+#include "fem/assembly.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/split_solver.hpp"
 #include "mesh/layer_mesh.hpp"
 
 namespace slidewave {
-
-/// Row-major storage: the matrices that are only multiplied with vectors (faster, no scatter).
-using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 struct LayerModel {
   explicit LayerModel(const RunConfig& config);

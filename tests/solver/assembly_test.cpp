@@ -1,0 +1,84 @@
+// The structured assembly (fem/assembly): every block the layer model keeps is, bit for bit, the block
+// of Eigen's setFromTriplets over the elements in order (the obvious assembly, written here as the
+// oracle), for the stiffness of each integration and both mass matrices, on meshes with the periodic seam
+// one and two elements wide of the smallest meshes.
+#include <gtest/gtest.h>
+
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "fem/assembly.hpp"
+#include "fem/quad4.hpp"
+#include "mesh/layer_mesh.hpp"
+#include "test_support.hpp"
+
+namespace slidewave {
+namespace {
+
+/// The obvious assembly: one triplet per nonzero element entry, duplicates summed in element order.
+SparseMatrix triplet_assembly(const LayerMesh& mesh, const Matrix8& Ke) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const auto nodes = mesh.element_nodes(e);
+    for (int a = 0; a < 8; ++a)
+      for (int b = 0; b < 8; ++b)
+        if (Ke(a, b) != 0) triplets.emplace_back(2 * nodes[a / 2] + a % 2, 2 * nodes[b / 2] + b % 2, Ke(a, b));
+  }
+  SparseMatrix A(mesh.n_dofs(), mesh.n_dofs());
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
+/// Same shape, same stored entries in the same order, the same bits.
+template <typename Expected, typename Actual>
+void expect_identical(const Expected& expected, const Actual& actual, const char* what) {
+  ASSERT_EQ(expected.rows(), actual.rows()) << what;
+  ASSERT_EQ(expected.cols(), actual.cols()) << what;
+  ASSERT_EQ(expected.nonZeros(), actual.nonZeros()) << what;
+  for (Eigen::Index k = 0; k <= expected.outerSize(); ++k)
+    ASSERT_EQ(expected.outerIndexPtr()[k], actual.outerIndexPtr()[k]) << what << ": outer " << k;
+  for (Eigen::Index k = 0; k < expected.nonZeros(); ++k) {
+    ASSERT_EQ(expected.innerIndexPtr()[k], actual.innerIndexPtr()[k]) << what << ": entry " << k;
+    ASSERT_EQ(expected.valuePtr()[k], actual.valuePtr()[k]) << what << ": entry " << k;
+  }
+}
+
+void expect_blocks_of_triplet_assembly(const LayerMesh& mesh, const Matrix8& Ke) {
+  const SparseMatrix full = triplet_assembly(mesh, Ke);
+  const int n_free = mesh.n_free(), n_top = mesh.n_top(), n = mesh.n_dofs();
+  const DofRange all{0, n}, free{0, n_free}, top{n_free, n};
+  expect_identical(RowSparseMatrix(full), assemble_uniform_rows(mesh, Ke, all, all), "all, rows");
+  expect_identical(full, assemble_uniform(mesh, Ke), "all, columns");
+  expect_identical(SparseMatrix(full.topLeftCorner(n_free, n_free)), assemble_uniform_columns(mesh, Ke, free, free),
+                   "free-free, columns");
+  expect_identical(RowSparseMatrix(full.topLeftCorner(n_free, n_free)), assemble_uniform_rows(mesh, Ke, free, free),
+                   "free-free, rows");
+  expect_identical(RowSparseMatrix(full.topRightCorner(n_free, n_top)), assemble_uniform_rows(mesh, Ke, free, top),
+                   "free-top, rows");
+  expect_identical(RowSparseMatrix(full.bottomRows(n_top)), assemble_uniform_rows(mesh, Ke, top, all), "top, rows");
+}
+
+TEST(Assembly, BlocksAreTheTripletAssemblyBitForBit) {
+  for (const LayerMesh& mesh : {LayerMesh(3, 1, 0.5), LayerMesh(4, 2, 0.5), LayerMesh(7, 5, 0.8)}) {
+    for (Integration integration : testing::kAllIntegrations)
+      for (double nu : {0.0, 0.3, 0.49})
+        expect_blocks_of_triplet_assembly(mesh, quad4_stiffness(1000.0, nu, mesh.h, integration));
+    for (MassKind kind : {MassKind::consistent, MassKind::lumped})
+      expect_blocks_of_triplet_assembly(mesh, quad4_mass(2.5, mesh.h, kind));
+  }
+}
+
+/// A mutation check of the oracle's premise: a nonsymmetric element matrix (each entry distinct) tells
+/// rows from columns, so a transposed block cannot pass.
+TEST(Assembly, ColumnsAreNotTheTransposedRows) {
+  const LayerMesh mesh(5, 3, 1.0);
+  Matrix8 Ke;
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b) Ke(a, b) = 1.0 + a + 0.125 * b;
+  expect_blocks_of_triplet_assembly(mesh, Ke);
+  const SparseMatrix columns = assemble_uniform(mesh, Ke);
+  EXPECT_NE(SparseMatrix(columns.transpose()).coeff(0, 2), columns.coeff(0, 2));
+}
+
+}  // namespace
+}  // namespace slidewave
