@@ -115,14 +115,14 @@ def _check_f(f: float) -> float:
     return f
 
 
-def _reduced_coupling(s, gamma: float):
+def _reduced_coupling(s, gamma: float, q=None):
     """n(s) = (2 q_l q_s - 2 + s^2) / s^2 (dimensionless), regular at s = 0 (n(0) = -gamma).
 
     For |s| < 0.5 the rationalised form (-4 gamma + (4 gamma - 1) s^2) / (2 - s^2 + 2 q_l q_s)
-    is used (no cancellation; its denominator is near 4 there).
+    is used (no cancellation; its denominator is near 4 there). q: (q_l, q_s) = _q(s, gamma) if known.
     """
     s = np.asarray(s, dtype=complex)
-    q_l, q_s = _q(s, gamma)
+    q_l, q_s = _q(s, gamma) if q is None else q
     z = s * s
     with np.errstate(divide="ignore", invalid="ignore"):
         direct = (2.0 * q_l * q_s - 2.0 + z) / z
@@ -134,10 +134,9 @@ def _parts(s, upper: ElasticSolid, lower: ElasticSolid):
     """(q_l1, r_1, n_1, q_l2, r_2, n_2, Gamma) at s = c / c_s1."""
     s = np.asarray(s, dtype=complex)
     s2 = s * (upper.c_s / lower.c_s)
-    q_l1 = _q(s, upper.gamma)[0]
-    q_l2 = _q(s2, lower.gamma)[0]
-    return (q_l1, reduced_rayleigh_function(s, upper.gamma), _reduced_coupling(s, upper.gamma),
-            q_l2, reduced_rayleigh_function(s2, lower.gamma), _reduced_coupling(s2, lower.gamma),
+    q1, q2 = _q(s, upper.gamma), _q(s2, lower.gamma)  # once per s: r and n take them
+    return (q1[0], reduced_rayleigh_function(s, upper.gamma, q1), _reduced_coupling(s, upper.gamma, q1),
+            q2[0], reduced_rayleigh_function(s2, lower.gamma, q2), _reduced_coupling(s2, lower.gamma, q2),
             upper.shear_modulus / lower.shear_modulus)
 
 

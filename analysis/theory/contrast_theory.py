@@ -9,7 +9,7 @@ The rigid flat (contrast None) takes the flutter wedge of `analysis.theory.flutt
 onset is its lower bound f = 1, `f_upper` its upper bound, no backward family (Adams' wave is neutral);
 the most unstable mode is not computed there (empty cells).
 
-Speeds in units of the layer's c_s (+ = +x, the layer's slip direction). A threshold costs up to ~30 s
+Speeds in units of the layer's c_s (+ = +x, the layer's slip direction). A threshold costs up to ~12 s
 (a near-rigid substrate, E_s/E = 1000): thresholds are computed once per (nu, contrast).
 """
 

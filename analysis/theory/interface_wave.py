@@ -140,14 +140,16 @@ def rayleigh_function(s, nu: float):
     return (2.0 - s * s) ** 2 - 4.0 * q_l * q_s
 
 
-def reduced_rayleigh_function(s, gamma: float):
+def reduced_rayleigh_function(s, gamma: float, q=None):
     """r(s) = R(s) / s^2, regular at s = 0 (r(0) = -2 (1 - gamma)).
 
     For |s| < 0.5 the rationalised form (s^6 - 8 s^4 + (24 - 16 gamma) s^2 - 16 (1 - gamma)) /
     ((2 - s^2)^2 + 4 q_l q_s) is used (its denominator is near 8 there), else R / s^2.
+    q: (q_l, q_s) = _q(s, gamma) if the caller has them already (the root finders evaluate r and n at
+    the same s: computing q once per s is most of their time saved, with the same numbers).
     """
     s = np.asarray(s, dtype=complex)
-    q_l, q_s = _q(s, gamma)
+    q_l, q_s = _q(s, gamma) if q is None else q
     z = s * s
     small = np.abs(s) < _SMALL_S
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -143,8 +143,8 @@ def contrast_theory_points(sweep):
 
 rule contrast_theory:
     """The bimaterial theory at a contrast sweep's points (analysis/theory/contrast_theory.py): the onset f
-    of each family of growing modes and the most unstable mode; ~2 min of CPU for `contrast` (a threshold of the
-    near-rigid substrate takes ~30 s)."""
+    of each family of growing modes and the most unstable mode; ~55 s of CPU for `contrast` (~100 s before the
+    root finders computed q once per s and sampled the contour edges in one call; the same numbers)."""
     output: "results/{sweep}/theory/contrast_theory.csv"
     # Early, beside the runs: it needs none of them, and left to the end (the greedy scheduler takes the
     # many runs first) its 1.7 min were the last thing `all` waited for.
