@@ -13,6 +13,7 @@ ContactSolver::ContactSolver(const Eigen::MatrixXd& W, const GaussSeidelSettings
   for (int k = 0; k < n_nodes_; ++k) diagonal_blocks_[k] = W.block<2, 2>(2 * k, 2 * k);
   if (layout == DelassusLayout::block_circulant) {
     periodic_columns_ = delassus_periodic_columns(W);
+    reach_ = delassus_periodic_reach(periodic_columns_, n_nodes_, kDelassusRoundOff);
     periodic_product_.emplace(W.leftCols<2>());
     all_stick_.emplace(W);
   }
@@ -67,7 +68,7 @@ GaussSeidelReport ContactSolver::sweep_until_converged(const Eigen::VectorXd& q,
         const Eigen::Vector2d delta = relaxation == 1 ? change : Eigen::Vector2d(relaxation * change);
         r.segment<2>(2 * k) = relaxation == 1 ? local.r : Eigen::Vector2d(r_old + delta);
         if (periodic)
-          add_periodic_node_columns(periodic_columns_, n_nodes, k, delta.x(), delta.y(), y);
+          add_periodic_node_columns(periodic_columns_, n_nodes, k, reach_, delta.x(), delta.y(), y);
         else
           y.noalias() += W_.middleCols<2>(2 * k) * delta;
         max_change = std::max(max_change, change.cwiseAbs().maxCoeff());

@@ -64,9 +64,11 @@ struct GaussSeidelSettings {
 enum class DelassusLayout {
   dense,           ///< any SPD W: products with W itself
   block_circulant  ///< W as delassus_operator_periodic makes it: node updates through its two generating
-                   ///< columns (delassus_periodic_columns; the same numbers and operations, so the same
-                   ///< sweeps bit for bit), the product W r by FFT (contact/block_circulant_product.hpp),
-                   ///< and the exact all-stick solution (contact/all_stick.hpp)
+                   ///< columns (delassus_periodic_columns), skipping the blocks that are round-off
+                   ///< (beyond delassus_periodic_reach at kDelassusRoundOff: none on a mesh of up to
+                   ///< ~130 contact nodes, which sweeps as the dense W does, bit for bit), the product
+                   ///< W r by FFT (contact/block_circulant_product.hpp), and the exact all-stick
+                   ///< solution (contact/all_stick.hpp)
 };
 
 class ContactSolver {
@@ -104,6 +106,7 @@ class ContactSolver {
   int n_nodes_;
   std::vector<Eigen::Matrix2d> diagonal_blocks_;
   Eigen::MatrixXd periodic_columns_;  ///< delassus_periodic_columns(W) (block-circulant W), else empty
+  int reach_ = 0;                     ///< node distance beyond which W's blocks are round-off (delassus_periodic_reach)
   std::optional<BlockCirculantProduct> periodic_product_;  ///< W r by FFT (block-circulant W)
   std::optional<AllStickSolution> all_stick_;              ///< block-circulant W only
 };

@@ -55,10 +55,36 @@ Eigen::Index column_start(int n_nodes, int k) { return 2 * ((n_nodes - k) % n_no
 
 }  // namespace
 
-void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
+void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, int reach, double d0, double d1,
                                Eigen::VectorXd& y) {
-  const Eigen::Index start = column_start(n_nodes, k);
-  add_two_columns(columns.data() + start, columns.data() + columns.rows() + start, d0, d1, y.data(), 2 * n_nodes);
+  const double* c0 = columns.data();
+  const double* c1 = columns.data() + columns.rows();
+  if (2 * reach + 1 >= n_nodes) {
+    const Eigen::Index start = column_start(n_nodes, k);
+    add_two_columns(c0 + start, c1 + start, d0, d1, y.data(), 2 * n_nodes);
+    return;
+  }
+  // Nodes i = k - reach .. k + reach, cut where they wrap past 0 or n - 1 into runs of consecutive nodes;
+  // node i's block is row 2 (n + i - k) of the stacked columns (0 < n + i - k < 2n), consecutive too.
+  const auto add_run = [&](int first, int last, int offset) {  // nodes first..last, i - k = node - k + offset
+    const Eigen::Index row = 2 * (static_cast<Eigen::Index>(n_nodes) + first - k + offset);
+    add_two_columns(c0 + row, c1 + row, d0, d1, y.data() + 2 * first, 2 * (last - first + 1));
+  };
+  const int first = k - reach, last = k + reach;
+  add_run(std::max(first, 0), std::min(last, n_nodes - 1), 0);
+  if (first < 0) add_run(n_nodes + first, n_nodes - 1, -n_nodes);
+  if (last >= n_nodes) add_run(0, last - n_nodes, n_nodes);
+}
+
+int delassus_periodic_reach(const Eigen::MatrixXd& columns, int n_nodes, double relative_floor) {
+  const Eigen::MatrixXd w = columns.topRows(2 * n_nodes);  // W(:, 0..1): node i's block at rows 2i, 2i + 1
+  const double floor = relative_floor * w.cwiseAbs().maxCoeff();
+  int reach = 0;
+  for (int i = 1; i < n_nodes; ++i) {
+    const int distance = std::min(i, n_nodes - i);
+    if (w.middleRows<2>(2 * i).cwiseAbs().maxCoeff() > floor) reach = std::max(reach, distance);
+  }
+  return reach;
 }
 
 }  // namespace slidewave

@@ -37,9 +37,24 @@ Eigen::MatrixXd delassus_periodic_columns(const Eigen::MatrixXd& W);
 // the results do not depend on the ISA that runs them (tested against the dense product to round-off).
 
 /// y += W(:, 2k..2k+1) (d0, d1), as Eigen's y += W.middleCols<2>(2k) * Vector2d(d0, d1):
-/// y_i += C(s + i, 0) d0 + C(s + i, 1) d1 with s = 2 ((n - k) mod n).
+/// y_i += C(s + i, 0) d0 + C(s + i, 1) d1 with s = 2 ((n - k) mod n), for the nodes i within `reach` nodes
+/// of k (periodically); y_i of the nodes beyond are left as they are. reach >= n / 2: every node, the
+/// product above bit for bit; a smaller reach skips the blocks that delassus_periodic_reach found to be
+/// round-off (the same operations on every node it keeps).
 /// @param columns delassus_periodic_columns(W), 4n x 2;  @param k node, 0 <= k < n_nodes
-void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, double d0, double d1,
+void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int k, int reach, double d0, double d1,
                                Eigen::VectorXd& y);
+
+/// Relative size below which an entry of a block-circulant W is round-off (delassus_periodic_reach).
+/// W's columns decay with the node distance (by ~0.6 per node at the default dt: an implicit step's
+/// response is local) until they reach the noise of the FFT solves that computed them, ~1e-17..6e-17 of
+/// the largest entry at H/128 (measured): entries below 1e-15 of it are that noise or within 16-100 times
+/// it; what a sweep leaves out by skipping them is 1e5 times below the contact tolerance (1e-10 of p0 h).
+inline constexpr double kDelassusRoundOff = 1e-15;
+
+/// The largest node distance d (at most n / 2) at which a 2 x 2 block of the block-circulant W given by
+/// its generating columns has an entry above relative_floor times W's largest entry: the reach of the
+/// Gauss–Seidel updates (add_periodic_node_columns). n / 2 or more when no block falls below it.
+int delassus_periodic_reach(const Eigen::MatrixXd& columns, int n_nodes, double relative_floor);
 
 }  // namespace slidewave

@@ -10,9 +10,11 @@
 #include "contact/delassus.hpp"
 #include "contact/prakash_clifton.hpp"
 #include "contact_oracle.hpp"
+#include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "model/layer_model.hpp"
 #include "test_support.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 namespace {
@@ -299,6 +301,43 @@ TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
     EXPECT_LT((r_dense - r_columns).lpNorm<Eigen::Infinity>(), 1e-9 * scale) << trial;
     EXPECT_LT((y_dense - y_columns).lpNorm<Eigen::Infinity>(), 1e-9 * q.lpNorm<Eigen::Infinity>()) << trial;
     EXPECT_EQ(state_dense, state_columns) << trial;
+  }
+}
+
+// The time loop's W (of K_eff: an implicit step's response, local) on a mesh with more contact nodes than
+// its blocks reach above round-off (kDelassusRoundOff): the sweeps leave those blocks out, and give the
+// dense W's solve: the same states and sweep counts, r to the dense solve's own round-off.
+TEST(GaussSeidel, BlocksBelowRoundOffLeftOutGiveTheSameSolve) {
+  const LayerModel model(
+      testing::make_config({{"mesh", {{"elements_per_H", 32}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
+  const HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
+  const BlockCirculantSolver K_eff(effective_matrix(hht, model.M_ff, model.K_ff), model.mesh.n_x, model.mesh.n_y, 1);
+  const int n = model.mesh.n_contact();
+  const Eigen::MatrixXd W = delassus_operator_periodic(K_eff, n);
+  const int reach = delassus_periodic_reach(delassus_periodic_columns(W), n, kDelassusRoundOff);
+  ASSERT_LT(2 * reach + 1, n) << "the test needs blocks below round-off (reach " << reach << " of " << n << ")";
+  std::mt19937_64 generator(9);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const double scale = model.d.p0 * model.d.h;
+  for (int trial = 0; trial < 10; ++trial) {
+    Eigen::VectorXd q(2 * n);
+    for (int k = 0; k < n; ++k) {  // a pressed interface with some nodes open and some slipping
+      q(2 * k) = 0.8 * W(0, 0) * scale * uniform(generator);
+      q(2 * k + 1) = W(1, 1) * scale * (-1.0 + 1.2 * uniform(generator));
+    }
+    const GaussSeidelSettings settings{1e-12, 500, scale};
+    const ContactSolver dense(W, settings, DelassusLayout::dense),
+        circulant(W, settings, DelassusLayout::block_circulant);
+    Eigen::VectorXd r_dense = Eigen::VectorXd::Zero(2 * n), r_columns = r_dense;
+    std::vector<ContactState> state_dense, state_columns;
+    CoulombBounds bounds_dense(1.5), bounds_columns(1.5);
+    const auto a = dense.solve(q, bounds_dense, r_dense, state_dense);
+    const auto b = circulant.solve(q, bounds_columns, r_columns, state_columns);
+    EXPECT_TRUE(a.converged && b.converged) << trial;
+    EXPECT_GT(a.iterations, 2) << trial;
+    EXPECT_EQ(a.iterations, b.iterations) << trial;
+    EXPECT_EQ(state_dense, state_columns) << trial;
+    EXPECT_LT((r_dense - r_columns).lpNorm<Eigen::Infinity>(), 1e-11 * scale) << trial;
   }
 }
 
