@@ -65,9 +65,9 @@ enum class DelassusLayout {
   dense,           ///< any SPD W: products with W itself
   block_circulant  ///< W as delassus_operator_periodic makes it: node updates through its two generating
                    ///< columns (delassus_periodic_columns), skipping the blocks that are round-off
-                   ///< (beyond delassus_periodic_reach at kDelassusRoundOff: none on a mesh of up to
-                   ///< ~130 contact nodes, which sweeps as the dense W does, bit for bit), the product
-                   ///< W r by FFT (contact/block_circulant_product.hpp), and the exact all-stick
+                   ///< (beyond delassus_periodic_reach at kDelassusRoundOff; a W whose every block rises
+                   ///< above it, e.g. lambda 2H at H/16, sweeps as the dense W does, bit for bit), the
+                   ///< product W r by FFT (contact/block_circulant_product.hpp), and the exact all-stick
                    ///< solution (contact/all_stick.hpp)
 };
 

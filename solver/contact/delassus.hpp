@@ -46,10 +46,12 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
                                Eigen::VectorXd& y);
 
 /// Relative size below which an entry of a block-circulant W is round-off (delassus_periodic_reach).
-/// W's columns decay with the node distance (by ~0.6 per node at the default dt: an implicit step's
-/// response is local) until they reach the noise of the FFT solves that computed them, ~1e-17..6e-17 of
-/// the largest entry at H/128 (measured): entries below 1e-15 of it are that noise or within 16-100 times
-/// it; what a sweep leaves out by skipping them is 1e5 times below the contact tolerance (1e-10 of p0 h).
+/// The time loop's W decays with distance (an implicit step's response is local: over a fixed length, a
+/// few times c dt, so by ~0.6 per node at H/128 and the default dt) until it reaches the noise of the FFT
+/// solves that computed it, ~1e-17..6e-17 of the largest entry at H/128 (measured): entries below 1e-15
+/// of it are that noise or within 16-100 times it; what a sweep leaves out by skipping them is 1e5 times
+/// below the contact tolerance (1e-10 of p0 h). Reach at the default dt (lambda 2H and 6H alike): 25 nodes
+/// at H/32, 33 at H/64, 67 at H/128, 135 at H/256.
 inline constexpr double kDelassusRoundOff = 1e-15;
 
 /// The largest node distance d (at most n / 2) at which a 2 x 2 block of the block-circulant W given by
