@@ -4,19 +4,22 @@
 
 Every run folder under RESULTS (default `results/runs`) that holds config.json, run.h5 and
 logs/simulate.benchmark.tsv is one measurement: the job's time and peak memory `max_rss`
-(Snakemake's benchmark), the mesh and period (config.json) and the steps the solver really made
-(run.h5's `n_steps_done`: a run that stops after the opening makes fewer than its cap). The time is
+(Snakemake's benchmark), the mesh and period (config.json), the steps the solver really made
+(run.h5's `n_steps_done`: a run that stops after the opening makes fewer than its cap) and of them
+the steps up to the onset estimate (run.h5's setup `t_onset_estimate`, `t_end`, `dt`: what the
+scheduler estimate knows before the run). The time is
 what the run takes on a core of its own: the wall time `s` times the share of a core the job got
 until Snakemake's last sample of it (`cpu_time`, the CPU seconds then, over the time of that sample:
 on a machine shared with other work a run may get a fraction of a core), or `s` itself for a job
 too short to have been sampled. Fitted:
 
-    wall_s = setup_s + n_steps * ms_per_step_h32 (n / 32)^mesh_exponent (lambda_over_H / 2)^period_exponent / 1000
+    wall_s = study/resources.py's seconds (setup, and the stick and slip phases' power laws apart)
     max_rss_mb = base_mb + mb_per_element * n^2 lambda_over_H
 
 the time by least squares on log(wall) with each (mesh, period) weighing the same however many runs
 it has (a campaign has hundreds of H/64 runs and a few at H/256) and a soft-L1 loss (a run slowed
-by a loaded machine does not pull the fit), the memory by
+by a loaded machine does not pull the fit); the two phases are told apart by the campaign's spread of
+stick fractions (an onset at 11 % of a run at nu = 0, f = 0.5, at 96 % at nu = 0.49, f = 2). The memory by
 least squares on the runs long enough for Snakemake to have sampled the solver (its first sample
 is taken when the job starts, the next 0.5 s later: a shorter job records its shell). An exponent
 that the campaign cannot see (one mesh, or one period) keeps its value in the current file. The
@@ -36,6 +39,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import least_squares
 
+from analysis.theory import elastic
 from study import resources
 
 #: Shortest job (s) whose peak memory is the solver's, not the shell's (Snakemake samples every 0.5 s).
@@ -51,13 +55,23 @@ def read_benchmark(path: Path) -> dict[str, float]:
     return {key: float(value) for key, value in row.items() if key != "h:m:s" and value not in ("", "NA")}
 
 
-def steps_done(run_file: Path) -> int | None:
-    """run.h5's `n_steps_done` attribute, or None when the run does not record it."""
+def steps_done(run_file: Path) -> tuple[int, int] | None:
+    """(steps, stick_steps): run.h5's `n_steps_done`, and how many of them come before the onset
+    estimate (min(t_onset_estimate, t_end) / dt, the scheduler's count); None when the run does not
+    record its steps."""
     import h5py
 
     with h5py.File(run_file, "r") as run:
         value = run.attrs.get("n_steps_done")
-    return None if value is None else int(value)
+        setup = run["setup"].attrs if "setup" in run else {}
+        times = [setup.get(key) for key in ("t_onset_estimate", "t_end", "dt")]
+    if value is None:
+        return None
+    steps = int(value)
+    if any(t is None for t in times):
+        return steps, 0
+    t_onset, t_end, dt = (float(t) for t in times)
+    return steps, min(steps, elastic.n_steps(min(t_onset, t_end), dt))
 
 
 def last_sample_time(wall: float) -> float:
@@ -86,24 +100,69 @@ def measurements(roots: list[Path]) -> list[dict]:
             if folder in seen or not config_file.is_file() or not run_file.is_file():
                 continue
             seen.add(folder)
-            steps = steps_done(run_file)
-            if not steps:
+            counted = steps_done(run_file)
+            if not counted or not counted[0]:
                 continue
+            steps, stick_steps = counted
             config = json.loads(config_file.read_text())
+            if not resources.has_stick_phase(config):
+                stick_steps = 0
             n, period = config["mesh"]["elements_per_H"], config["geometry"]["lambda_over_H"]
             record = read_benchmark(bench)
             found.append({"run": str(folder), "n": n, "period": period, "elements": n * n * period,
-                          "steps": steps, "wall_s": core_seconds(record), "max_rss_mb": record.get("max_rss", math.nan)})
+                          "steps": steps, "stick_steps": stick_steps, "wall_s": core_seconds(record),
+                          "max_rss_mb": record.get("max_rss", math.nan)})
     return found
 
 
+#: The time constants of study/resources.py.
+TIME_KEYS = ("setup_s", "ms_per_step_h32", "mesh_exponent", "period_exponent", "contact_ms_per_step_h32",
+             "contact_mesh_exponent", "stick_ms_per_step_h32", "stick_mesh_exponent", "stick_period_exponent")
+
+
+def prior_time(prior: dict) -> dict:
+    """The prior's time constants. A file from before the phases were modelled apart (no contact_ or
+    stick_ keys) starts the contact solve at a tenth of the layer's step, growing as it does, and the
+    stick step at a third of it."""
+    full = dict(prior)
+    full.setdefault("contact_ms_per_step_h32", prior["ms_per_step_h32"] / 10)
+    full.setdefault("contact_mesh_exponent", prior["mesh_exponent"])
+    full.setdefault("stick_ms_per_step_h32", prior["ms_per_step_h32"] / 3)
+    full.setdefault("stick_mesh_exponent", prior["mesh_exponent"])
+    full.setdefault("stick_period_exponent", prior["period_exponent"])
+    return full
+
+
 def fit_time(runs: list[dict], prior: dict) -> dict:
-    """setup_s, ms_per_step_h32 and the exponents that the runs can see (the others from `prior`)."""
+    """The time constants (TIME_KEYS) that the runs can see; the others from `prior`.
+
+    A stick step is the layer's part of a slip step, without the contact solve and in wavenumbers
+    (docs/stick-phase.md): it costs less at every mesh and period, and grows no faster with them. The fit
+    keeps it so, with the stick step as a factor <= 1 on the layer's part and exponents a fraction of its (a
+    campaign's stick fractions, 4-97 % of a run's steps, tell the phases apart only loosely: unconstrained,
+    a fit made an H/32 stick step cost three slip steps). The contact solve's part needs three meshes or
+    more to be told from the layer's; with fewer it keeps the prior's."""
+    prior = prior_time(prior)
     free_mesh = len({r["n"] for r in runs}) > 1
+    free_contact = len({r["n"] for r in runs}) > 2  # two power laws in the mesh need three meshes
     free_period = len({r["period"] for r in runs}) > 1
+    free_stick = any(r["stick_steps"] > 0 for r in runs) and any(r["steps"] > r["stick_steps"] for r in runs)
+    # (name, free, start, lower, upper); the stick step's as offsets from the layer's part
+    variables = [("setup_s", True, None, 0.0, np.inf),
+                 ("log_ms", True, math.log(prior["ms_per_step_h32"]), -np.inf, np.inf),
+                 ("mesh_exponent", free_mesh, prior["mesh_exponent"], 0.0, 6.0),
+                 ("period_exponent", free_period, prior["period_exponent"], 0.0, 6.0),
+                 ("log_contact_ms", free_contact, math.log(max(prior["contact_ms_per_step_h32"], 1e-6)), -np.inf,
+                  np.inf),
+                 ("contact_mesh_exponent", free_contact, prior["contact_mesh_exponent"], 0.0, 8.0),
+                 ("log_stick_ratio", free_stick, -1.0, -np.inf, 0.0),
+                 ("stick_mesh_fraction", free_stick and free_mesh, 0.8, 0.0, 1.0),
+                 ("stick_period_fraction", free_stick and free_period, 0.8, 0.0, 1.0)]
+    variables = [v for v in variables if v[1]]
     n = np.array([r["n"] for r in runs], float)
     period = np.array([r["period"] for r in runs], float)
     steps = np.array([r["steps"] for r in runs], float)
+    stick = np.array([r["stick_steps"] for r in runs], float)
     wall = np.array([r["wall_s"] for r in runs], float)
     group_size = {}
     for r in runs:
@@ -111,21 +170,35 @@ def fit_time(runs: list[dict], prior: dict) -> dict:
     weight = np.array([group_size[(r["n"], r["period"])] ** -0.5 for r in runs])
 
     def unpack(x):
-        mesh_exp = x[2] if free_mesh else prior["mesh_exponent"]
-        period_exp = x[3] if free_period else prior["period_exponent"]
-        return x[0], math.exp(x[1]), mesh_exp, period_exp
+        value = dict(zip((v[0] for v in variables), x))
+        c = dict(prior)
+        c["setup_s"] = value["setup_s"]
+        c["ms_per_step_h32"] = math.exp(value["log_ms"])
+        for key in ("mesh_exponent", "period_exponent", "contact_mesh_exponent"):
+            c[key] = value.get(key, prior[key])
+        if "log_contact_ms" in value:
+            c["contact_ms_per_step_h32"] = math.exp(value["log_contact_ms"])
+        if free_stick:
+            c["stick_ms_per_step_h32"] = c["ms_per_step_h32"] * math.exp(value["log_stick_ratio"])
+            for key, fraction in (("mesh_exponent", "stick_mesh_fraction"), ("period_exponent", "stick_period_fraction")):
+                c[f"stick_{key}"] = c[key] * value[fraction] if fraction in value else prior[f"stick_{key}"]
+        return c
+
+    def model(c):
+        mesh, per = n / 32.0, period / 2.0
+        slip = (c["ms_per_step_h32"] * mesh ** c["mesh_exponent"]
+                + c["contact_ms_per_step_h32"] * mesh ** c["contact_mesh_exponent"]) * per ** c["period_exponent"]
+        stuck = c["stick_ms_per_step_h32"] * mesh ** c["stick_mesh_exponent"] * per ** c["stick_period_exponent"]
+        return c["setup_s"] + (stick * stuck + (steps - stick) * slip) / 1000.0
 
     def residuals(x):
-        setup, ms, mesh_exp, period_exp = unpack(x)
-        model = setup + steps * ms * (n / 32.0) ** mesh_exp * (period / 2.0) ** period_exp / 1000.0
-        return weight * (np.log(model) - np.log(wall))
+        return weight * (np.log(model(unpack(x))) - np.log(wall))
 
-    start = [min(prior["setup_s"], wall.min() / 2), math.log(prior["ms_per_step_h32"]),
-             prior["mesh_exponent"], prior["period_exponent"]]
-    lower, upper = [0.0, -np.inf, 0.0, 0.0], [np.inf, np.inf, 6.0, 6.0]
-    solution = least_squares(residuals, start, bounds=(lower, upper), loss="soft_l1", f_scale=0.1)
-    setup, ms, mesh_exp, period_exp = unpack(solution.x)
-    return {"setup_s": setup, "ms_per_step_h32": ms, "mesh_exponent": mesh_exp, "period_exponent": period_exp}
+    start = [min(prior["setup_s"], wall.min() / 2) if v[0] == "setup_s" else v[2] for v in variables]
+    solution = least_squares(residuals, start, bounds=([v[3] for v in variables], [v[4] for v in variables]),
+                             loss="soft_l1", f_scale=0.1)
+    fitted = unpack(solution.x)
+    return {key: fitted[key] for key in TIME_KEYS}
 
 
 def fit_memory(runs: list[dict], prior: dict) -> dict:
@@ -153,7 +226,8 @@ def ratio_table(runs: list[dict], constants: dict) -> list[str]:
     for r in runs:
         groups.setdefault((r["n"], r["period"]), []).append(r)
     for (n, period), group in sorted(groups.items()):
-        time = [r["wall_s"] / resources.seconds(n, period, r["steps"], constants) for r in group]
+        time = [r["wall_s"] / resources.seconds(n, period, r["steps"], constants, stick_steps=r["stick_steps"])
+                for r in group]
         memory = [r["max_rss_mb"] / resources.memory_mb(n, period, constants) for r in group
                   if r["wall_s"] >= MIN_SAMPLED_WALL_S and math.isfinite(r["max_rss_mb"])]
         memory_text = (f"{np.median(memory):>24.2f} {max(memory):>6.2f}" if memory else f"{'-':>24} {'-':>6}")
@@ -165,7 +239,8 @@ def ratio_table(runs: list[dict], constants: dict) -> list[str]:
 def fit(runs: list[dict], prior: dict) -> dict:
     """The constants study/resources.py reads, with what they were fitted from."""
     constants = {"time": fit_time(runs, prior["time"]), "memory": fit_memory(runs, prior["memory"])}
-    worst = max(r["wall_s"] / resources.seconds(r["n"], r["period"], r["steps"], constants) for r in runs)
+    worst = max(r["wall_s"] / resources.seconds(r["n"], r["period"], r["steps"], constants, stick_steps=r["stick_steps"])
+                for r in runs)
     constants["fitted_from"] = {
         "runs": len(runs),
         "meshes": sorted({r["n"] for r in runs}),

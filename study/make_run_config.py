@@ -21,7 +21,7 @@ import json
 import sys
 from pathlib import Path
 
-from study.run_length import run_length
+from study.run_length import RunLength, run_length
 from study.sweeps import CONTRAST
 
 
@@ -50,15 +50,21 @@ def substrate_of(point: dict, model: dict, solver: dict) -> dict | None:
     return {"E": contrast * model["E"], "nu": point["nu"], "rho": point["rho"], "H": model["H"]}
 
 
+def run_times(spec: dict) -> RunLength:
+    """The times that bound one point's run (study/run_length.py): onset estimate, transit, t_end."""
+    point, model, length = spec["point"], spec["model"], spec["run_length"]
+    return run_length(E=model["E"], nu=point["nu"], rho=point["rho"], H=model["H"], f=point["f"],
+                      Uy_over_H=model["Uy_over_H"], preshear_ratio=model["preshear_ratio"],
+                      V0_over_cs=point["V0_over_cs"], duration_transits=length["duration_transits"],
+                      stop_after_opening_transits=length.get("stop_after_opening_transits"),
+                      t_end=length.get("t_end"), substrate=substrate_of(point, model, spec.get("solver", {})))
+
+
 def run_config(spec: dict) -> dict:
     """The solver configuration of one point (a dict ready for json.dump)."""
-    point, model, length = spec["point"], spec["model"], spec["run_length"]
+    point, model = spec["point"], spec["model"]
     substrate = substrate_of(point, model, spec.get("solver", {}))
-    times = run_length(E=model["E"], nu=point["nu"], rho=point["rho"], H=model["H"], f=point["f"],
-                       Uy_over_H=model["Uy_over_H"], preshear_ratio=model["preshear_ratio"],
-                       V0_over_cs=point["V0_over_cs"], duration_transits=length["duration_transits"],
-                       stop_after_opening_transits=length.get("stop_after_opening_transits"),
-                       t_end=length.get("t_end"), substrate=substrate)
+    times = run_times(spec)
     snapshots = sorted(times.t_onset_estimate + offset * times.transit_time
                        for offset in spec.get("snapshot_offsets_transits", []))
     if snapshots and (snapshots[0] < 0 or snapshots[-1] > times.t_end):

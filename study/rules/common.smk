@@ -12,7 +12,7 @@ from study import figure_kinds
 from study import resources as study_resources
 from study import run_store
 from study import sweeps as study_sweeps
-from study.make_run_config import config_json_text, run_config
+from study.make_run_config import config_json_text, run_config, run_times
 from snakemake.exceptions import WorkflowError
 
 # Scripts run as `-m study.*`, `-m analysis` and figures/*.py import from the repository root,
@@ -117,13 +117,19 @@ def run_owner(identity):
 
 @functools.lru_cache(maxsize=None)
 def run_estimate(sweep, point):
-    """Scheduler resources of one run (study/resources.py), from its mesh and simulated time."""
+    """Scheduler resources of one run (study/resources.py), from its mesh and simulated time, the part of
+    it before the slip onset estimate apart."""
     spec = run_spec(sweep, point)
     p, time = spec["point"], run_config(spec)["time"]
-    steps = study_resources.n_steps(E=spec["model"]["E"], nu=p["nu"], rho=p["rho"], t_end=time["t_end"],
-                                    dt_times_cs=time.get("dt_times_cs", 0.5), dt=time.get("dt"))
+
+    def steps_to(t):
+        return study_resources.n_steps(E=spec["model"]["E"], nu=p["nu"], rho=p["rho"], t_end=t,
+                                       dt_times_cs=time.get("dt_times_cs", 0.5), dt=time.get("dt"))
+
+    stick_end = min(run_times(spec).t_onset_estimate, time["t_end"])
+    stick_steps = steps_to(stick_end) if study_resources.has_stick_phase(run_config(spec)) else 0
     return study_resources.estimate(elements_per_H=p["elements_per_H"], lambda_over_H=p["lambda_over_H"],
-                                    steps=steps)
+                                    steps=steps_to(time["t_end"]), stick_steps=stick_steps)
 
 
 def figure(sweep, stem):
