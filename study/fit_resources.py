@@ -180,7 +180,8 @@ def fit_time(runs: list[dict], prior: dict) -> dict:
             c["contact_ms_per_step_h32"] = math.exp(value["log_contact_ms"])
         if free_stick:
             c["stick_ms_per_step_h32"] = c["ms_per_step_h32"] * math.exp(value["log_stick_ratio"])
-            for key, fraction in (("mesh_exponent", "stick_mesh_fraction"), ("period_exponent", "stick_period_fraction")):
+            for key, fraction in (("mesh_exponent", "stick_mesh_fraction"),
+                                  ("period_exponent", "stick_period_fraction")):
                 c[f"stick_{key}"] = c[key] * value[fraction] if fraction in value else prior[f"stick_{key}"]
         return c
 
@@ -239,8 +240,8 @@ def ratio_table(runs: list[dict], constants: dict) -> list[str]:
 def fit(runs: list[dict], prior: dict) -> dict:
     """The constants study/resources.py reads, with what they were fitted from."""
     constants = {"time": fit_time(runs, prior["time"]), "memory": fit_memory(runs, prior["memory"])}
-    worst = max(r["wall_s"] / resources.seconds(r["n"], r["period"], r["steps"], constants, stick_steps=r["stick_steps"])
-                for r in runs)
+    worst = max(r["wall_s"] / resources.seconds(r["n"], r["period"], r["steps"], constants,
+                                                stick_steps=r["stick_steps"]) for r in runs)
     constants["fitted_from"] = {
         "runs": len(runs),
         "meshes": sorted({r["n"] for r in runs}),

@@ -6,8 +6,9 @@ campaign (study/fit_resources.py says how). The model has the two phases of a ru
 slip onset every node sticks and the solver steps the linear problem in wavenumbers
 (docs/stick-phase.md), several times cheaper per step than after it and growing more slowly with the
 mesh; after it a step is the layer's work plus the Gauss–Seidel contact solve, whose share grows fast
-with the mesh (more nodes, more sweeps: 0.1 ms of a 0.35 ms step at H/64, most of a 37 ms one at H/256).
-One power law for all fitted none of them (an H/128 run at 4.5 times its fit):
+with the mesh (more nodes, more sweeps: 0.07 ms of a 0.30 ms step at H/64, 0.41 of 1.47 ms at H/128 in
+the step bench, most of a step at H/256). One power law for all fitted none of them (an H/128 run at 4.5
+times its fit):
 
     seconds = setup_s + (n_stick ms_stick + (n_steps - n_stick) (ms_slip + ms_contact)) / 1000
     ms_slip    = ms_per_step_h32         (n / 32)^mesh_exponent         (lambda_over_H / 2)^period_exponent
@@ -18,9 +19,9 @@ One power law for all fitted none of them (an H/128 run at 4.5 times its fit):
 with n_steps = t_end / dt, dt = dt_times_cs / c_s: the cap of the run (a run that stops after the
 interface opens makes fewer steps, which is not known before it runs), and n_stick the steps up to
 the quasi-static onset estimate (study/run_length.py, eq. 1), at most n_steps, where the solver has
-a stick phase (`has_stick_phase`: not on a substrate, not with Prakash–Clifton's regularization), else 0. Asked from a scheduler:
-TIME_MARGIN x the estimate plus 5 minutes (a shared node may be loaded, the contact iterations vary
-from point to point), and MEMORY_MARGIN x the memory estimate plus MEMORY_FLOOR_MB.
+a stick phase (`has_stick_phase`: not on a substrate, not with Prakash–Clifton's regularization), else
+0. Asked from a scheduler: TIME_MARGIN x the estimate plus 5 minutes (a shared node may be loaded, the
+contact iterations vary from point to point), and MEMORY_MARGIN x the memory estimate plus MEMORY_FLOOR_MB.
 """
 
 from __future__ import annotations
