@@ -337,7 +337,9 @@ TEST(GaussSeidel, BlocksBelowRoundOffLeftOutGiveTheSameSolve) {
     EXPECT_GT(a.iterations, 2) << trial;
     EXPECT_EQ(a.iterations, b.iterations) << trial;
     EXPECT_EQ(state_dense, state_columns) << trial;
-    EXPECT_LT((r_dense - r_columns).lpNorm<Eigen::Infinity>(), 1e-11 * scale) << trial;
+    // The round-off of a sweep's sums over n = 192 nodes, n eps ~ 4e-14 of p0 h (measured: 2-3e-15);
+    // a block of W wrongly left out moves r by far more.
+    EXPECT_LT((r_dense - r_columns).lpNorm<Eigen::Infinity>(), 1e-13 * scale) << trial;
   }
 }
 
