@@ -77,7 +77,7 @@ void add_periodic_node_columns(const Eigen::MatrixXd& columns, int n_nodes, int 
 }
 
 int delassus_periodic_reach(const Eigen::MatrixXd& columns, int n_nodes, double relative_floor) {
-  const Eigen::MatrixXd w = columns.topRows(2 * n_nodes);  // W(:, 0..1): node i's block at rows 2i, 2i + 1
+  const auto w = columns.topRows(2 * n_nodes);  // W(:, 0..1): node i's block at rows 2i, 2i + 1
   const double floor = relative_floor * w.cwiseAbs().maxCoeff();
   int reach = 0;
   for (int i = 1; i < n_nodes; ++i) {
