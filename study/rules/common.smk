@@ -120,14 +120,15 @@ def run_estimate(sweep, point):
     """Scheduler resources of one run (study/resources.py), from its mesh and simulated time, the part of
     it before the slip onset estimate apart."""
     spec = run_spec(sweep, point)
-    p, time = spec["point"], run_config(spec)["time"]
+    config = run_config(spec)
+    p, time = spec["point"], config["time"]
 
     def steps_to(t):
         return study_resources.n_steps(E=spec["model"]["E"], nu=p["nu"], rho=p["rho"], t_end=t,
                                        dt_times_cs=time.get("dt_times_cs", 0.5), dt=time.get("dt"))
 
     stick_end = min(run_times(spec).t_onset_estimate, time["t_end"])
-    stick_steps = steps_to(stick_end) if study_resources.has_stick_phase(run_config(spec)) else 0
+    stick_steps = steps_to(stick_end) if study_resources.has_stick_phase(config) else 0
     return study_resources.estimate(elements_per_H=p["elements_per_H"], lambda_over_H=p["lambda_over_H"],
                                     steps=steps_to(time["t_end"]), stick_steps=stick_steps)
 
