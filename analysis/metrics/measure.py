@@ -30,7 +30,7 @@ from analysis.theory import elastic, flutter
 
 #: Version of the measurement definitions, written into every metrics file (analysis/README.md
 #: says what each version changed).
-ANALYSIS_VERSION = "6"
+ANALYSIS_VERSION = "7"
 
 
 def _fronts_at(tracks: list[EdgeTrack], time: float) -> np.ndarray:
@@ -123,10 +123,9 @@ def _celerity(m: Measured) -> dict[str, Any]:
     """`celerity` is the default rule's for every run (nan with its reason where undefined), and so
     are its diagnostics; then the localization and every rule."""
     interface = m.run.interface
-    spacing = m.spacing_all if math.isfinite(m.spacing_all) else m.front_map.grid.period
     keys = default_rule.celerity_metrics(
         m.by_rule, m.high_threshold, x=interface.x, t=interface.t, v=interface.slip_velocity,
-        c_s=m.attr("c_s"), output_interval=m.front_map.output_interval, pulse_spacing=spacing,
+        c_s=m.attr("c_s"), output_interval=m.front_map.output_interval, pulse_spacing=m.train_spacing,
         window_length=m.window_length)
     return {**keys, "localization_time": m.localization.t_localized, **rules.rule_metrics(m.by_rule)}
 
@@ -195,7 +194,7 @@ def _category(m: Measured) -> dict[str, Any]:
         slipped=m.front_map.n_slipping_frames > 0, has_front=m.front_map.n_edge_frames > 0,
         opened=m.opened.opened, celerity=m.celerity, c_s=m.attr("c_s"), c_l=m.attr("c_l"),
         inversion=m.inverted, non_physical=m.non_physical_reason is not None,
-        sampling_too_coarse=m.sampled.too_coarse)}
+        sampling_too_coarse=m.sampled.too_coarse or m.beyond_sampling_limit)}
 
 
 @family("pulses", ("pulse_count", "pulse_spacing", "pulse_count_field", "pulse_major_strengths",

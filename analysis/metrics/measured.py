@@ -15,6 +15,7 @@ from analysis.core.errors import InputError
 from analysis.core.io import RunData
 from analysis.fronts import celerity as cel
 from analysis.fronts import rules
+from analysis.fronts.sampling_limit import BEYOND_SAMPLING_LIMIT, within_sampling_limit
 from analysis.fronts.tracking import FrontMap, find_edges
 from analysis.metrics import inversion, opening, pulses, validity
 
@@ -133,11 +134,25 @@ class Measured:
         return self.by_rule[rules.DEFAULT_RULE].celerity
 
     @property
+    def train_spacing(self) -> float:
+        """Gap between neighbouring pulses of the default rule's train (m; the period for one pulse)."""
+        return _train_spacing(self.spacing_all, self.front_map)
+
+    @property
+    def beyond_sampling_limit(self) -> bool:
+        """The opening pulse moves too far per frame to be measured (analysis.fronts.sampling_limit)."""
+        return self.by_rule[rules.DEFAULT_RULE].reason == BEYOND_SAMPLING_LIMIT
+
+    @property
     def inverted(self) -> bool:
         return bool(self.min_ratio < 0) and self.run.attr("f") > 0
 
     def attr(self, key: str) -> Any:
         return self.run.attr(key)
+
+
+def _train_spacing(spacing_all: float, front_map: FrontMap) -> float:
+    return spacing_all if math.isfinite(spacing_all) else front_map.grid.period
 
 
 def measure(run: RunData, settings: Settings) -> Measured:
@@ -176,6 +191,11 @@ def measure(run: RunData, settings: Settings) -> Measured:
                                          **{**rule_kw, "slip_threshold": high},
                                          names=(rules.DEFAULT_RULE,))[rules.DEFAULT_RULE]
     count_all, spacing_all = pulses.pulse_train(by_rule[rules.DEFAULT_RULE].fronts, front_map.grid.period)
+    # A fit that moves more than half a pulse spacing per frame is aliasing, not a celerity.
+    spacing = _train_spacing(spacing_all, front_map)
+    by_rule = {name: within_sampling_limit(result, front_map.output_interval, spacing)
+               for name, result in by_rule.items()}
+    high_threshold = within_sampling_limit(high_threshold, front_map.output_interval, spacing)
 
     # 4. T/N: minimum and frictional drops, averaged over a shear round trip 2H/c_s: after a drop
     # the layer rings at that period and its harmonics (long run at nu=0.2, f=1.5: 77.6 s =

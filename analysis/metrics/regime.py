@@ -23,7 +23,9 @@ what a run shows:
   larger than H; `analysis.metrics.validity`), whatever it shows otherwise;
 - ``sampling_too_coarse``: the interface output is too sparse to see fronts (fewer than
   `validity.MIN_FRAMES_PER_ROUND_TRIP` frames per shear round trip 2H/c_s): "no slip" or "no
-  opening" from such a run would mean nothing.
+  opening" from such a run would mean nothing; or too sparse for its opening pulse, which moves
+  more than half a pulse spacing per frame (`celerity_reason` ``beyond_sampling_limit``,
+  `analysis.fronts.sampling_limit`).
 
 Neither of the last two enters Table 1.
 """
