@@ -9,6 +9,7 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "linalg/fftw_planner.hpp"
 #include "linalg/thread_team.hpp"
@@ -27,6 +28,29 @@ struct Blocks {
   int bandwidth = 0;
 };
 
+/// max |A_ij| over the stored entries (NaN entries ignored, as std::max ignores them). Four running maxima
+/// over a compressed matrix's values (max is exact in any order), so that the loop is not one chain of
+/// dependent maxsd: the matrices have millions of entries.
+__attribute__((noinline)) double largest_magnitude(const Eigen::SparseMatrix<double>& A) {
+  const double* values = A.valuePtr();
+  double largest[4] = {0, 0, 0, 0};
+  const auto take = [&largest, values](int lane, long e) {
+    const double magnitude = std::fabs(values[e]);
+    if (magnitude > largest[lane]) largest[lane] = magnitude;
+  };
+  if (A.isCompressed()) {
+    const long n = A.nonZeros();
+    long e = 0;
+    for (; e + 4 <= n; e += 4)
+      for (int lane = 0; lane < 4; ++lane) take(lane, e + lane);
+    for (; e < n; ++e) take(0, e);
+  } else {
+    for (int k = 0; k < A.outerSize(); ++k)
+      for (long e = A.outerIndexPtr()[k]; e < A.outerIndexPtr()[k] + A.innerNonZeroPtr()[k]; ++e) take(0, e);
+  }
+  return std::max({largest[0], largest[1], largest[2], largest[3]});
+}
+
 /// Empty if A is block-circulant, symmetric and nearest-neighbour (blocks written to *out), else the
 /// first mismatch. Entries are compared to kRelativeTolerance * max |A_ij|; a structural zero in one
 /// slice counts as 0 against the other slices. A is column-major: the columns of slice i_c are visited
@@ -44,23 +68,28 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
     return why.str();
   }
   const int s = 2 * n_y;
-  double scale = 0;
-  for (int k = 0; k < A.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) scale = std::max(scale, std::fabs(it.value()));
+  const double scale = largest_magnitude(A);
   if (!(scale > 0) || !std::isfinite(scale)) return "A is zero or not finite";
   const double tol = kRelativeTolerance * scale;
 
-  // DOF -> (slice i, local r = 2 j + d), and the column of slice i, local c.
-  const auto slice_of = [n_x](int dof) { return (dof / 2) % n_x; };
-  const auto local_of = [n_x](int dof) { return 2 * ((dof / 2) / n_x) + dof % 2; };
+  // DOF -> (slice i, local r = 2 j + d), tabulated (the entries are millions, the DOFs n), and the column
+  // of slice i, local c.
+  std::vector<int> slice(static_cast<std::size_t>(n)), local(static_cast<std::size_t>(n));
+  for (int dof = 0; dof < n; ++dof) {
+    slice[dof] = (dof / 2) % n_x;
+    local[dof] = 2 * ((dof / 2) / n_x) + dof % 2;
+  }
+  const auto slice_of = [&slice](int dof) { return slice[dof]; };
+  const auto local_of = [&local](int dof) { return local[dof]; };
   const auto column = [n_x](int i, int c) { return 2 * ((c / 2) * n_x + i) + c % 2; };
 
   Blocks blocks;
   for (auto& B : blocks.B) B = Eigen::MatrixXd::Zero(s, s);
-  // Row slice i_r of an entry in column slice i_c: offset o = i_c - i_r in {-1, 0, +1} selects B_o.
+  // Row slice i_r of an entry in column slice i_c: offset o = i_c - i_r, modulo n_x, in {-1, 0, +1}
+  // selects B_o (n_x >= 3, so the three offsets are distinct).
   const auto block_index = [n_x](int i_r, int i_c) {
-    const int o = ((i_c - i_r) % n_x + n_x) % n_x;
-    return o == 0 ? 1 : o == 1 ? 2 : o == n_x - 1 ? 0 : -1;
+    const int o = i_c - i_r;
+    return o == 0 ? 1 : (o == 1 || o == 1 - n_x) ? 2 : (o == -1 || o == n_x - 1) ? 0 : -1;
   };
   for (int c = 0; c < s; ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, column(0, c)); it; ++it) {
@@ -85,9 +114,22 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
     for (int c = 0; c < s; ++c)
       for (int r = 0; r < s; ++r)
         if (std::fabs(blocks.B[b](r, c)) > tol) significant.push_back({b, r, c});
-  std::vector<int> stamp(3 * static_cast<std::size_t>(s) * s, -1);
-  const auto at = [s](int b, int r, int c) { return (static_cast<std::size_t>(b) * s + c) * s + r; };
+  // A slice has all of them when as many of its entries sit at a significant position (the entries of a
+  // column slice have distinct positions (b, r, c)); only a slice that lacks one is searched for which.
+  const auto first_lacking = [&](int i) -> const Position* {
+    std::vector<char> found(3 * static_cast<std::size_t>(s) * s, 0);
+    const auto at = [s](int b, int r, int c) { return (static_cast<std::size_t>(b) * s + c) * s + r; };
+    for (int c = 0; c < s; ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A, column(i, c)); it; ++it) {
+        const int b = block_index(slice_of(it.index()), i);
+        if (b >= 0) found[at(b, local_of(it.index()), c)] = 1;
+      }
+    for (const Position& q : significant)
+      if (!found[at(q.b, q.r, q.c)]) return &q;
+    return nullptr;
+  };
   for (int i = 1; i < n_x; ++i) {
+    std::size_t present = 0;
     for (int c = 0; c < s; ++c)
       for (Eigen::SparseMatrix<double>::InnerIterator it(A, column(i, c)); it; ++it) {
         const int i_r = slice_of(it.index()), r = local_of(it.index());
@@ -98,17 +140,17 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
               << ", its counterpart in slice 0 (column slice " << i << ", row slice " << i_r << ")";
           return why.str();
         }
-        if (b >= 0) stamp[at(b, r, c)] = i;
+        if (std::fabs(reference) > tol) ++present;
       }
-    for (const Position& q : significant)
-      if (stamp[at(q.b, q.r, q.c)] != i) {
-        why << "column slice " << i << " lacks the entry (" << q.r << ", " << q.c << ") of block "
-            << (q.b == 0   ? "B_{-1}"
-                : q.b == 1 ? "B_0"
-                           : "B_{+1}")
-            << " = " << blocks.B[q.b](q.r, q.c) << " of slice 0";
-        return why.str();
-      }
+    if (present == significant.size()) continue;
+    if (const Position* q = first_lacking(i)) {
+      why << "column slice " << i << " lacks the entry (" << q->r << ", " << q->c << ") of block "
+          << (q->b == 0   ? "B_{-1}"
+              : q->b == 1 ? "B_0"
+                          : "B_{+1}")
+          << " = " << blocks.B[q->b](q->r, q->c) << " of slice 0";
+      return why.str();
+    }
   }
 
   // Symmetry: B_0 = B_0^T and B_{-1} = B_{+1}^T make A(theta) Hermitian.

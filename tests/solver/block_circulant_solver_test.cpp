@@ -133,6 +133,13 @@ TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
   EXPECT_FALSE(BlockCirculantSolver::is_block_circulant(broken, 5, 3, &reason));
   EXPECT_FALSE(reason.empty());
   EXPECT_THROW(BlockCirculantSolver(broken, 5, 3), std::invalid_argument);
+  // Not circulant: slice 3 lacks an entry that slice 0 has (removed from the structure), named in the reason.
+  Eigen::SparseMatrix<double> lacking = A;
+  const int gone = 2 * l.model.mesh.node(3, 1);
+  lacking.prune([gone](Eigen::Index r, Eigen::Index c, double) { return !(r == gone && c == gone); });
+  ASSERT_EQ(lacking.nonZeros(), A.nonZeros() - 1);
+  EXPECT_FALSE(BlockCirculantSolver::is_block_circulant(lacking, 5, 3, &reason));
+  EXPECT_NE(reason.find("column slice 3 lacks the entry (2, 2) of block B_0"), std::string::npos) << reason;
   // Not symmetric: the same change in every slice, on one side of the diagonal.
   Eigen::SparseMatrix<double> skew = A;
   for (int i = 0; i < 5; ++i) skew.coeffRef(2 * l.model.mesh.node(i, 0), 2 * l.model.mesh.node(i, 1)) += 1.0;

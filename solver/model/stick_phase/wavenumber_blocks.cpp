@@ -25,6 +25,10 @@ void read_blocks(const RowSparseMatrix& A, const LayerModel& model, BandedLanes&
                  Eigen::Matrix2d& A_dd0) {
   std::vector<std::complex<double>> entries(band.a.size());
   const int n_x = model.mesh.n_x, n_free = model.n_free, s = 2 * model.mesh.n_y;
+  // phase(m, b, n_x) for b = -1, 0, 1 (index b + 1): the same values, made once per lane, not per entry.
+  std::vector<std::complex<double>> phases(3 * static_cast<std::size_t>(band.lanes));
+  for (int m = 0; m < band.lanes; ++m)
+    for (int b = -1; b <= 1; ++b) phases[3 * static_cast<std::size_t>(m) + b + 1] = phase(m, b, n_x);
   A_fd0 = Eigen::MatrixXd::Zero(s, 2);
   A_dd0.setZero();
   for (int r = 0; r < s; ++r) {
@@ -40,12 +44,14 @@ void read_blocks(const RowSparseMatrix& A, const LayerModel& model, BandedLanes&
       if (b == 2 || std::abs(k) > kHalfBandwidth)
         throw std::invalid_argument("WavenumberBlocks: row " + std::to_string(row) + " couples to DOF " +
                                     std::to_string(col) + ", beyond the neighbouring columns or the band");
-      for (int m = 0; m < band.lanes; ++m) entries[band.at(r, k, m)] += it.value() * phase(m, b, n_x);
+      for (int m = 0; m < band.lanes; ++m)
+        entries[band.at(r, k, m)] += it.value() * phases[3 * static_cast<std::size_t>(m) + b + 1];
     }
   }
   // conj(d_r) A_m(r, c) d_c with d = 1 (u_x), i (u_y): real, since the square mesh and the isotropic
   // element are symmetric under x -> -x (the u_x-u_y couplings of A_m are odd in theta, so imaginary).
-  double largest = 0, imaginary = 0;
+  // The check's scale is the largest squared modulus (a sanity bound: its last bit does not matter).
+  double largest_squared = 0, imaginary = 0;
   for (int r = 0; r < s; ++r)
     for (int k = -band.p; k <= band.p; ++k) {
       if (r + k < 0 || r + k >= s) continue;
@@ -54,10 +60,11 @@ void read_blocks(const RowSparseMatrix& A, const LayerModel& model, BandedLanes&
       for (int m = 0; m < band.lanes; ++m) {
         const std::complex<double> z = turn * entries[band.at(r, k, m)];
         band.a[band.at(r, k, m)] = z.real();
-        largest = std::max(largest, std::abs(z));
+        largest_squared = std::max(largest_squared, std::norm(z));
         imaginary = std::max(imaginary, std::abs(z.imag()));
       }
     }
+  const double largest = std::sqrt(largest_squared);
   if (imaginary > 1e-12 * largest)
     throw std::invalid_argument("WavenumberBlocks: the blocks are not real in the basis i u_y (imaginary part " +
                                 std::to_string(imaginary / largest) + " of the largest entry)");
