@@ -185,15 +185,9 @@ def fit_time(runs: list[dict], prior: dict) -> dict:
                 c[f"stick_{key}"] = c[key] * value[fraction] if fraction in value else prior[f"stick_{key}"]
         return c
 
-    def model(c):
-        mesh, per = n / 32.0, period / 2.0
-        slip = (c["ms_per_step_h32"] * mesh ** c["mesh_exponent"]
-                + c["contact_ms_per_step_h32"] * mesh ** c["contact_mesh_exponent"]) * per ** c["period_exponent"]
-        stuck = c["stick_ms_per_step_h32"] * mesh ** c["stick_mesh_exponent"] * per ** c["stick_period_exponent"]
-        return c["setup_s"] + (stick * stuck + (steps - stick) * slip) / 1000.0
-
     def residuals(x):
-        return weight * (np.log(model(unpack(x))) - np.log(wall))
+        model = resources.seconds(n, period, steps, {"time": unpack(x)}, stick_steps=stick)
+        return weight * (np.log(model) - np.log(wall))
 
     start = [min(prior["setup_s"], wall.min() / 2) if v[0] == "setup_s" else v[2] for v in variables]
     solution = least_squares(residuals, start, bounds=([v[3] for v in variables], [v[4] for v in variables]),

@@ -30,6 +30,8 @@ import json
 import math
 from pathlib import Path
 
+import numpy as np
+
 from analysis.theory import elastic
 from study.run_length import shear_wave_speed
 
@@ -58,9 +60,10 @@ def _ms_per_step(time: dict, prefix: str, elements_per_H: int, lambda_over_H: fl
 def seconds(elements_per_H: int, lambda_over_H: float, steps: int, constants: dict = CONSTANTS, *,
             stick_steps: int = 0) -> float:
     """Estimated wall time (s) of a run of `steps` time steps, the first `stick_steps` of them before the
-    slip onset, on one core."""
+    slip onset, on one core. Numbers or numpy arrays (study/fit_resources.py fits this same formula over
+    a campaign's runs at once)."""
     time = constants["time"]
-    stick = min(stick_steps, steps)
+    stick = np.minimum(stick_steps, steps)
     slip = _ms_per_step(time, "", elements_per_H, lambda_over_H) + _ms_per_step(time, "contact_", elements_per_H,
                                                                                  lambda_over_H)
     return time["setup_s"] + (stick * _ms_per_step(time, "stick_", elements_per_H, lambda_over_H)
