@@ -25,13 +25,15 @@ import numpy as np
 
 from analysis.fronts import celerity as cel
 from analysis.fronts.rules import DEFAULT_RULE, WINDOW_SENSITIVITY_RULE, RuleResult
+from analysis.fronts.sampling_limit import frame_shift_fraction
 from analysis.fronts.xcorr import XcorrResult, celerity_by_xcorr
 
 #: celerity_quality flags: |threshold - xcorr| / |c| above this -> "estimates_disagree";
 QUALITY_AGREEMENT = 0.02
 #: |drift| above this -> "unsteady";
 QUALITY_DRIFT = 0.05
-#: |c| dt_out above this fraction of the pulse spacing -> "aliasing_risk" (the limit is 1/2).
+#: |c| dt_out above this fraction of the pulse spacing -> "aliasing_risk" (the limit, beyond which a fit is
+#: no celerity, is sampling_limit.SAMPLING_LIMIT = 1/2).
 ALIASING_FRACTION = 0.4
 
 
@@ -87,7 +89,8 @@ def celerity_metrics(by_rule: dict[str, RuleResult], high_threshold: RuleResult,
     frame_shift = abs(c) * output_interval if ok else math.nan
     xcorr = celerity_by_xcorr(x, t, v, result.window) if ok else XcorrResult(math.nan)
     agreement = abs(relative(xcorr.celerity, c))
-    aliasing_risk = bool(frame_shift > ALIASING_FRACTION * pulse_spacing) if ok else None
+    aliasing_risk = (bool(frame_shift_fraction(c, output_interval, pulse_spacing) > ALIASING_FRACTION)
+                     if ok else None)
     quality = None
     if ok:
         concerns = [name for name, bad in (
