@@ -10,14 +10,6 @@
 namespace slidewave {
 namespace {
 
-/// b M + (1 - a) K, lane by lane.
-BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
-  BandedLanes A = blocks.K;
-  const double b = hht.mass_factor(), k = 1 - hht.alpha;
-  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
-  return A;
-}
-
 /// y(rows [r0, r1)) -= (A restricted to the columns 0, 1) x_c, all lanes: the load of the held contact DOFs.
 void subtract_contact_columns(const BandedLanes& A, const LaneVectors& x_c, LaneVectors& y, int r0, int r1) {
   for (int r = r0; r < r1; ++r)
@@ -269,6 +261,23 @@ void WavenumberStepper::retire(int m) {
   double elastic = 0;
   for (int r = 0; r < blocks_.s; ++r) elastic += (std::conj(U_static_.get(r, m)) * KU_static_.get(r, m)).real();
   retired_elastic_ += 0.5 * blocks_.weight[m] * elastic;
+}
+
+void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
+                      const Eigen::Vector2d& u_top, HHTState& s) {
+  const int n_f = layer.n_free, n_t = layer.n_top, n_y = layer.mesh.n_y;
+  s.u.resize(n_f + n_t);
+  transform.inverse(x.U, n_y, s.u.data());
+  s.u.tail(n_t) = layer.top_displacement(u_top.x(), u_top.y());
+  s.v = Eigen::VectorXd::Zero(n_f + n_t);
+  transform.inverse(x.V, n_y, s.v.data());
+  for (int k = n_f; k < n_f + n_t; k += 2) s.v(k) = layer.d.V0;
+  s.acc = Eigen::VectorXd::Zero(n_f + n_t);
+  transform.inverse(x.A, n_y, s.acc.data());
+  s.Ku = layer.K * s.u;
+  s.Mu_f = layer.M_ff_rows * s.u.head(n_f);
+  s.Mv_f = layer.M_ff_rows * s.v.head(n_f);
+  s.Ma_f = layer.M_ff_rows * s.acc.head(n_f);
 }
 
 }  // namespace slidewave
