@@ -17,8 +17,10 @@ WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, 
       blocks_(layer),
       transform_(layer.mesh.n_x),
       A_eff_(effective_band(blocks_, hht_), 0),
-      state_a_(blocks_.s, blocks_.lanes),
-      state_b_(blocks_.s, blocks_.lanes),
+      state_(blocks_.s, blocks_.lanes),
+      U_next_(blocks_.s, blocks_.lanes),
+      KU_next_(blocks_.s, blocks_.lanes),
+      R_next_(2, blocks_.lanes),
       contact_(layer.n_contact_dofs, W, settings),
       u_free_contact_(layer.n_contact_dofs),
       u_contact_(layer.n_contact_dofs),
@@ -45,7 +47,7 @@ Eigen::Vector2d WavenumberSlipStep::top_after(std::int64_t step) const {
 
 void WavenumberSlipStep::start(const LoopState& loop) {
   const HHTState& layer = loop.dynamics;
-  ModeState& x = state_a_;
+  ModeState& x = state_;
   transform_.forward(layer.u.data(), x.U);
   transform_.forward(layer.v.data(), x.V);
   transform_.forward(layer.acc.data(), x.A);
@@ -54,116 +56,147 @@ void WavenumberSlipStep::start(const LoopState& loop) {
   transform_.forward(layer.Mu_f.data(), x.MU);
   transform_.forward(layer.Mv_f.data(), x.MV);
   transform_.forward(layer.Ma_f.data(), x.MA);
-  state_b_ = state_a_;
-  current_ = &state_a_;
-  next_ = &state_b_;
   step_ = loop.step;
+  predicted_ = false;
   contact_states_ = loop.contact;
   friction_ = loop.friction;
   u_contact_ = layer.u.head(layer_.n_contact_dofs);
   r_ = layer.r;
 }
 
+namespace {
+
+/// The step's coefficients (time/hht.hpp; w, a' of the contact forces).
+struct StepCoefficients {
+  double dt, b, c2, a, g, g_old, beta_dt2, w, a_previous;
+};
+
+StepCoefficients step_coefficients(const HHTCoefficients& hht, double w, double a_previous) {
+  const double dt = hht.dt;
+  return {dt, hht.mass_factor(), dt * dt * (0.5 - hht.beta), hht.alpha, hht.gamma, 1 - hht.gamma,
+          hht.beta * dt * dt, w, a_previous};
+}
+
+/// Pointer to row r, part `part` (0: real, 1: imaginary) of a lane-vector.
+inline double* row(LaneVectors& X, int r, int part) { return (part ? X.im : X.re).data() + X.at(r, 0); }
+inline const double* row(const LaneVectors& X, int r, int part) { return (part ? X.im : X.re).data() + X.at(r, 0); }
+
+/// Row r of the free solve's right-hand side, b M u~ - a K u(n) (+ a' R(n) on the contact rows),
+/// M u~ = M u + dt M v + c M a, from the mass products, K u and R of time n (R null off the contact rows).
+__attribute__((always_inline)) inline void free_rhs_row(const ModeState& x, const LaneVectors& KU, const LaneVectors* R,
+                                                        int r, int lanes, const StepCoefficients k, LaneVectors& rhs) {
+  for (int part = 0; part < 2; ++part) {
+    const double* __restrict Mu = row(x.MU, r, part);
+    const double* __restrict Mv = row(x.MV, r, part);
+    const double* __restrict Ma = row(x.MA, r, part);
+    const double* __restrict Ku = row(KU, r, part);
+    double* __restrict out = row(rhs, r, part);
+    for (int m = 0; m < lanes; ++m) out[m] = k.b * (Mu[m] + k.dt * Mv[m] + k.c2 * Ma[m]) - k.a * Ku[m];
+    if (R) {
+      const double* __restrict R_r = row(*R, r, part);
+      for (int m = 0; m < lanes; ++m) out[m] += k.a_previous * R_r[m];
+    }
+  }
+}
+
+/// The lanes of one row and part of the correction U(n+1) = U_free + (G_0 R_0 + G_1 R_1) (w folded into G) and
+/// the Newmark update in place: u~ = u + dt v + c a, a(n+1) = b (u(n+1) - u~), v += dt ((1-gamma) a + gamma a(n+1)).
+/// Pointers and coefficients as parameters, so that the loop vectorizes.
+__attribute__((always_inline)) inline void correct_lanes(const double* __restrict G0, const double* __restrict G1,
+                                                         const double* __restrict R0, const double* __restrict R1,
+                                                         const double* __restrict u, double* __restrict u_next,
+                                                         double* __restrict acc, double* __restrict v, int lanes,
+                                                         const StepCoefficients k) {
+  for (int m = 0; m < lanes; ++m) {
+    const double u_new = u_next[m] + (G0[m] * R0[m] + G1[m] * R1[m]);
+    const double u_tilde = u[m] + k.dt * v[m] + k.c2 * acc[m];
+    const double acc_new = k.b * (u_new - u_tilde);
+    u_next[m] = u_new;
+    v[m] = v[m] + k.dt * (k.g_old * acc[m] + k.g * acc_new);
+    acc[m] = acc_new;
+  }
+}
+
+/// The lanes of one row and part of the mass products, in place: M a(n+1) = -(1-a) K u(n+1) - a K u(n)
+/// [+ w R(n+1) + a' R(n) on the contact rows: R_next, R non-null] (K u with the top's share; the top has a = 0);
+/// M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
+__attribute__((always_inline)) inline void mass_lanes(const double* __restrict Ku_next, const double* __restrict Ku,
+                                                      const double* __restrict R_next, const double* __restrict R,
+                                                      double* __restrict Ma, double* __restrict Mv,
+                                                      double* __restrict Mu, int lanes, const StepCoefficients k) {
+  for (int m = 0; m < lanes; ++m) {
+    double Ma_new = -(1 - k.a) * Ku_next[m] - k.a * Ku[m];
+    if (R_next) Ma_new += k.w * R_next[m] + k.a_previous * R[m];
+    const double Mu_tilde = Mu[m] + k.dt * Mv[m] + k.c2 * Ma[m];
+    Mv[m] = Mv[m] + k.dt * (k.g_old * Ma[m] + k.g * Ma_new);
+    Ma[m] = Ma_new;
+    Mu[m] = Mu_tilde + k.beta_dt2 * Ma_new;
+  }
+}
+
+}  // namespace
+
 SLIDEWAVE_VECTOR_CLONES
 void WavenumberSlipStep::solve_free() {
   const int s = blocks_.s, lanes = blocks_.lanes, n_x = blocks_.n_x;
-  const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
-  const double a_previous = w_previous_;
-  const ModeState& x = *current_;
-  ModeState& y = *next_;
-  // b M u~ - a K u(n) (+ a' R(n) on the contact rows), M u~ = M u + dt M v + c M a.
-  for (int r = 0; r < s; ++r)
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
-      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
-      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
-      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
-      for (int m = 0; m < lanes; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
-      if (r < 2) {
-        const double* R = (part ? x.R.im : x.R.re).data() + e;
-        for (int m = 0; m < lanes; ++m) rhs[m] += a_previous * R[m];
-      }
-    }
-  u_top_next_ = top_after(step_ + 1);
-  for (int r = 0; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
-    add_to_lane_zero(y.U, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
-  A_eff_.solve(y.U, lanes);
-  transform_.inverse(y.U, 1, u_free_contact_.data());
+  if (!predicted_) {  // else the last correct() made it
+    const StepCoefficients k = step_coefficients(hht_, w_, w_previous_);
+    for (int r = 0; r < s; ++r) free_rhs_row(state_, state_.KU, r < 2 ? &state_.R : nullptr, r, lanes, k, U_next_);
+    u_top_next_ = top_after(step_ + 1);
+    for (int r = 0; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
+      add_to_lane_zero(U_next_, r, -(1 - hht_.alpha) * n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
+  }
+  predicted_ = false;
+  A_eff_.solve(U_next_, lanes);
+  transform_.inverse(U_next_, 1, u_free_contact_.data());
 }
 
 GaussSeidelReport WavenumberSlipStep::solve_contact() {
   const GaussSeidelReport report =
       contact_.solve(u_free_contact_, u_contact_, r_, law_, friction_, contact_states_);
-  transform_.forward(contact_.r_next.data(), next_->R);
+  transform_.forward(contact_.r_next.data(), R_next_);
   return report;
 }
 
 SLIDEWAVE_VECTOR_CLONES
 void WavenumberSlipStep::correct() {
-  const int s = blocks_.s, lanes = blocks_.lanes, n_x = blocks_.n_x;
-  const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
-  const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
-  const double w = w_, a_previous = w_previous_;
-  const ModeState& x = *current_;
-  ModeState& y = *next_;
-  // U(n+1) = U_free + w (G_0 R_0 + G_1 R_1); u~ = u + dt v + c a, a(n+1) = b (u(n+1) - u~),
-  // v += dt ((1-gamma) a + gamma a(n+1)).
-  for (int r = 0; r < s; ++r)
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* G0 = G0_.data() + e;
-      const double* G1 = G1_.data() + e;
-      const double* R0 = (part ? y.R.im : y.R.re).data();
-      const double* R1 = R0 + lanes;
-      const double* u = (part ? x.U.im : x.U.re).data() + e;
-      const double* acc = (part ? x.A.im : x.A.re).data() + e;
-      const double* v = (part ? x.V.im : x.V.re).data() + e;
-      double* __restrict u_next = (part ? y.U.im : y.U.re).data() + e;
-      double* __restrict acc_next = (part ? y.A.im : y.A.re).data() + e;
-      double* __restrict v_next = (part ? y.V.im : y.V.re).data() + e;
-      for (int m = 0; m < lanes; ++m) {
-        u_next[m] += G0[m] * R0[m] + G1[m] * R1[m];
-        const double u_tilde = u[m] + dt * v[m] + c2 * acc[m];
-        acc_next[m] = b * (u_next[m] - u_tilde);
-        v_next[m] = v[m] + dt * (g_old * acc[m] + g * acc_next[m]);
+  const int s = blocks_.s, lanes = blocks_.lanes, n_x = blocks_.n_x, p = blocks_.K.p;
+  const StepCoefficients k = step_coefficients(hht_, w_, w_previous_);
+  ModeState& x = state_;
+  const Eigen::Vector2d u_top_following = top_after(step_ + 2);
+  // One sweep down the rows, so that the rows it works on stay in cache: row r corrected (U_next_ from U_free
+  // to U(n+1); A, V in place), then row q = r - p, whose band reaches row r at most: K U(n+1) into KU_next_,
+  // the mass products in place, and the next step's right-hand side into x.U (U(n) is not read after its
+  // row's correction), with the top at u_d(n+2).
+  for (int r = 0; r < s + p; ++r) {
+    if (r < s)
+      for (int part = 0; part < 2; ++part) {
+        const double* R0 = row(R_next_, 0, part);
+        correct_lanes(G0_.data() + x.U.at(r, 0), G1_.data() + x.U.at(r, 0), R0, R0 + lanes, row(x.U, r, part),
+                      row(U_next_, r, part), row(x.A, r, part), row(x.V, r, part), lanes, k);
       }
-    }
-  blocks_.K.multiply(y.U, y.KU, 0, s, lanes);
-  for (int r = 0; r < s; ++r) add_to_lane_zero(y.KU, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
-  // M a(n+1) = -(1-a) K u(n+1) - a K u(n) + [contact rows] (w R(n+1) + a' R(n)) (K u with the top's share; the
-  // top has a = 0); M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
-  for (int r = 0; r < s; ++r)
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
-      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
-      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
-      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
-      double* __restrict Ma_next = (part ? y.MA.im : y.MA.re).data() + e;
-      double* __restrict Mv_next = (part ? y.MV.im : y.MV.re).data() + e;
-      double* __restrict Mu_next = (part ? y.MU.im : y.MU.re).data() + e;
-      for (int m = 0; m < lanes; ++m) Ma_next[m] = -(1 - a) * Ku_next[m] - a * Ku[m];
-      if (r < 2) {
-        const double* R_next = (part ? y.R.im : y.R.re).data() + e;
-        const double* R = (part ? x.R.im : x.R.re).data() + e;
-        for (int m = 0; m < lanes; ++m) Ma_next[m] += w * R_next[m] + a_previous * R[m];
-      }
-      for (int m = 0; m < lanes; ++m) {
-        const double Mu_tilde = Mu[m] + dt * Mv[m] + c2 * Ma[m];
-        Mv_next[m] = Mv[m] + dt * (g_old * Ma[m] + g * Ma_next[m]);
-        Mu_next[m] = Mu_tilde + beta_dt2 * Ma_next[m];
-      }
-    }
+    const int q = r - p;
+    if (q < 0) continue;
+    blocks_.K.multiply(U_next_, KU_next_, q, q + 1, lanes);
+    add_to_lane_zero(KU_next_, q, n_x * blocks_.K_fd0.row(q).dot(u_top_next_));
+    for (int part = 0; part < 2; ++part)
+      mass_lanes(row(KU_next_, q, part), row(x.KU, q, part), q < 2 ? row(R_next_, q, part) : nullptr,
+                 q < 2 ? row(x.R, q, part) : nullptr, row(x.MA, q, part), row(x.MV, q, part), row(x.MU, q, part),
+                 lanes, k);
+    free_rhs_row(x, KU_next_, q < 2 ? &R_next_ : nullptr, q, lanes, k, x.U);
+    add_to_lane_zero(x.U, q, -(1 - k.a) * n_x * blocks_.K_fd0.row(q).dot(u_top_following));
+  }
   // The contact displacement in real space: the next contact problem's q, the friction law's increment.
-  transform_.inverse(y.U, 1, u_contact_next_.data());
+  transform_.inverse(U_next_, 1, u_contact_next_.data());
+  std::swap(x.U, U_next_);  // U_next_: the next free solve's right-hand side
+  std::swap(x.KU, KU_next_);
+  std::swap(x.R, R_next_);
   du_ = u_contact_next_ - u_contact_;
   r_ = contact_.r_next;
-  law_.update(du_, r_, dt, friction_);
+  law_.update(du_, r_, k.dt, friction_);
   u_contact_.swap(u_contact_next_);
-  std::swap(current_, next_);
+  u_top_next_ = u_top_following;
+  predicted_ = true;
   ++step_;
 }
 
@@ -176,7 +209,7 @@ GaussSeidelReport WavenumberSlipStep::step() {
 
 void WavenumberSlipStep::reconstruct(LoopState& loop) const {
   HHTState& s = loop.dynamics;
-  rebuild_dynamics(layer_, transform_, *current_, top_after(step_), s);
+  rebuild_dynamics(layer_, transform_, state_, top_after(step_), s);
   s.r = r_;
   loop.contact = contact_states_;
   loop.friction = friction_;

@@ -52,7 +52,7 @@ class WavenumberSlipStep {
   const Eigen::VectorXd& reactions() const { return r_; }
   const Eigen::VectorXd& contact_displacement() const { return u_contact_; }
   const std::vector<ContactState>& contact_states() const { return contact_states_; }
-  const ModeState& modes() const { return *current_; }
+  const ModeState& modes() const { return state_; }
   /// The layer's loop state at the current step: dynamics (K u and the mass products by the real-space
   /// products, as StickPhase::reconstruct makes them), contact states, friction memory, step. The energy
   /// sums and the recorder's state are left as they were (not booked here).
@@ -69,13 +69,13 @@ class WavenumberSlipStep {
   RowTransform transform_;
   BandedLaneFactor A_eff_;         ///< A_eff,m = b M_m + (1-a) K_m on all s rows
   std::vector<double> G0_, G1_;    ///< w A_eff,m^-1 e_0, w A_eff,m^-1 e_1 (row r, lane m at r lanes + m)
-  ModeState state_a_, state_b_;    ///< the S of ModeState is not used
-  ModeState* current_ = &state_a_;
-  ModeState* next_ = &state_b_;
+  ModeState state_;                ///< time n (updated in place by correct(); its S is not used)
+  LaneVectors U_next_, KU_next_, R_next_;  ///< the step's right-hand side -> U_free -> U(n+1); K U(n+1); R(n+1)
   SlipContact contact_;
   std::vector<ContactState> contact_states_;
   FrictionState friction_;
   std::int64_t step_ = 0;
+  bool predicted_ = false;  ///< the last correct() made the next free solve's right-hand side (in U_next_)
   Eigen::Vector2d u_top_next_;
   Eigen::VectorXd u_free_contact_, u_contact_, u_contact_next_, r_, du_;
 };
