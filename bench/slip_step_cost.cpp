@@ -9,11 +9,11 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <string>
 #include <vector>
 
 #include "mesh_options.hpp"
+#include "thread_cpu_time.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "model/stick_phase/plain_slip_step.hpp"
@@ -21,12 +21,7 @@
 
 namespace {
 
-/// CPU seconds of this thread (the machine is shared; both paths are timed the same way).
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using slidewave::bench::cpu_seconds;
 
 /// Keeps the state `after` steps past the first slip and stops the run there.
 class AfterFirstSlip : public slidewave::RunObserver {

@@ -14,6 +14,10 @@ LoopState captured_loop_state(const LayerModel& m, const StateArrays& arrays) {
   s.r.resize(m.n_contact_dofs);
   loop.energy.F_top.resize(m.n_top);
   loop.recording.u_contact_start.resize(m.n_contact_dofs);
+  if (m.config.output.energy_decomposition) {
+    HhtDissipation& h = loop.energy.hht;
+    for (Eigen::VectorXd* v : {&h.v_f, &h.acc_f, &h.Ma_f, &h.Ku_f, &h.shift_f}) v->resize(n_f);
+  }
   loop.contact.resize(m.mesh.n_contact());
   loop.friction = make_friction_law(m.config.friction)->initial_state(Eigen::VectorXd::Zero(m.n_contact_dofs));
   restore_from_arrays(arrays, loop);

@@ -47,15 +47,7 @@ Eigen::Vector2d WavenumberSlipStep::top_after(std::int64_t step) const {
 
 void WavenumberSlipStep::start(const LoopState& loop) {
   const HHTState& layer = loop.dynamics;
-  ModeState& x = state_;
-  transform_.forward(layer.u.data(), x.U);
-  transform_.forward(layer.v.data(), x.V);
-  transform_.forward(layer.acc.data(), x.A);
-  transform_.forward(layer.Ku.data(), x.KU);
-  transform_.forward(layer.r.data(), x.R);
-  transform_.forward(layer.Mu_f.data(), x.MU);
-  transform_.forward(layer.Mv_f.data(), x.MV);
-  transform_.forward(layer.Ma_f.data(), x.MA);
+  transform_state(layer, transform_, state_);
   step_ = loop.step;
   predicted_ = false;
   contact_states_ = loop.contact;

@@ -95,14 +95,7 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
 void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {
   const int s = blocks_.s, lanes = blocks_.lanes;
   ModeState& x = state_a_;
-  transform.forward(layer.u.data(), x.U);
-  transform.forward(layer.v.data(), x.V);
-  transform.forward(layer.acc.data(), x.A);
-  transform.forward(layer.Ku.data(), x.KU);
-  transform.forward(layer.r.data(), x.R);
-  transform.forward(layer.Mu_f.data(), x.MU);
-  transform.forward(layer.Mv_f.data(), x.MV);
-  transform.forward(layer.Ma_f.data(), x.MA);
+  transform_state(layer, transform, x);
   track_shift_ = shift_f != nullptr;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
   state_b_ = state_a_;
@@ -261,6 +254,17 @@ void WavenumberStepper::retire(int m) {
   double elastic = 0;
   for (int r = 0; r < blocks_.s; ++r) elastic += (std::conj(U_static_.get(r, m)) * KU_static_.get(r, m)).real();
   retired_elastic_ += 0.5 * blocks_.weight[m] * elastic;
+}
+
+void transform_state(const HHTState& layer, const RowTransform& transform, ModeState& x) {
+  transform.forward(layer.u.data(), x.U);
+  transform.forward(layer.v.data(), x.V);
+  transform.forward(layer.acc.data(), x.A);
+  transform.forward(layer.Ku.data(), x.KU);
+  transform.forward(layer.r.data(), x.R);
+  transform.forward(layer.Mu_f.data(), x.MU);
+  transform.forward(layer.Mv_f.data(), x.MV);
+  transform.forward(layer.Ma_f.data(), x.MA);
 }
 
 void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
