@@ -33,6 +33,8 @@ class PlainSlipStep {
   const GaussSeidelSettings& settings() const { return settings_; }
   const FrictionLaw& friction() const { return *friction_; }
 
+  /// From a captured state. Restarting: from a state of another step than the one the last step() ended at
+  /// (HHTStepper keeps the predictor of that step and reuses it for the same top displacement).
   void start(const LoopState& loop);
   /// The three parts of a step (timed apart by the bench), in this order; step() does all three.
   void solve_free();
