@@ -9,27 +9,22 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "contact/friction_law.hpp"
 #include "mesh_options.hpp"
+#include "thread_cpu_time.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state_arrays.hpp"
 #include "model/simulation.hpp"
+#include "model/stick_phase/plain_slip_step.hpp"
 #include "model/stick_phase/stick_phase.hpp"
 
 namespace {
 
-/// CPU seconds of this thread: the machine is shared, so wall time per step measures the load as much as
-/// the step; both paths are timed the same way.
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using slidewave::bench::cpu_seconds;
 
 /// Keeps the state at t = 0 and stops the run at its first slip.
 class UntilFirstSlip : public slidewave::RunObserver {
@@ -52,20 +47,6 @@ class UntilFirstSlip : public slidewave::RunObserver {
   std::int64_t first_slip = -1;
   double cpu_start = 0, cpu_stick = 0;
 };
-
-slidewave::LoopState loop_state(const slidewave::LayerModel& m, const slidewave::StateArrays& arrays) {
-  slidewave::LoopState loop;
-  const int n = m.n_free + m.n_top, n_f = m.n_free;
-  slidewave::HHTState& s = loop.dynamics;
-  for (Eigen::VectorXd* v : {&s.u, &s.v, &s.acc, &s.Ku}) v->resize(n);
-  for (Eigen::VectorXd* v : {&s.Mu_f, &s.Mv_f, &s.Ma_f}) v->resize(n_f);
-  s.r.resize(m.n_contact_dofs);
-  loop.energy.F_top.resize(m.n_top);
-  loop.recording.u_contact_start.resize(m.n_contact_dofs);
-  loop.contact.resize(m.mesh.n_contact());
-  slidewave::restore_from_arrays(arrays, loop);
-  return loop;
-}
 
 struct StickRun {
   std::int64_t first_slip = -1;
@@ -147,7 +128,7 @@ int main(int argc, char** argv) {
       UntilFirstSlip plain;
       const slidewave::RunRecord record = slidewave::simulate(model, {}, &plain.stop, nullptr, &plain);
       const double plain_ms = 1e3 * plain.cpu_stick / static_cast<double>(plain.first_slip - 1);
-      const slidewave::LoopState start = loop_state(model, plain.start);
+      const slidewave::LoopState start = slidewave::captured_loop_state(model, plain.start);
       const StickRun retiring = run_stick(model, record.u_x_preshear, start, slidewave::StickPhase::kRetireTolerance);
       const StickRun full = run_stick(model, record.u_x_preshear, start, 0.0);
       const std::size_t steps = retiring.step_seconds.size();

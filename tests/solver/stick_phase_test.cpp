@@ -14,6 +14,7 @@
 #include "model/layer_model.hpp"
 #include "model/loop_state_arrays.hpp"
 #include "model/simulation.hpp"
+#include "model/stick_phase/plain_slip_step.hpp"
 #include "model/stick_phase/stick_phase.hpp"
 #include "test_support.hpp"
 
@@ -48,25 +49,6 @@ class PlainRun : public RunObserver {
   std::int64_t first_slip_ = -1;
 };
 
-/// A loop state of the model's sizes holding the arrays.
-LoopState loop_state(const LayerModel& m, const StateArrays& arrays) {
-  LoopState loop;
-  const int n = m.n_free + m.n_top, n_f = m.n_free;
-  HHTState& s = loop.dynamics;
-  for (Eigen::VectorXd* v : {&s.u, &s.v, &s.acc, &s.Ku}) v->resize(n);
-  for (Eigen::VectorXd* v : {&s.Mu_f, &s.Mv_f, &s.Ma_f}) v->resize(n_f);
-  s.r.resize(m.n_contact_dofs);
-  loop.energy.F_top.resize(m.n_top);
-  loop.recording.u_contact_start.resize(m.n_contact_dofs);
-  if (m.config.output.energy_decomposition) {
-    HhtDissipation& h = loop.energy.hht;
-    for (Eigen::VectorXd* v : {&h.v_f, &h.acc_f, &h.Ma_f, &h.Ku_f, &h.shift_f}) v->resize(n_f);
-  }
-  loop.contact.resize(m.mesh.n_contact());
-  restore_from_arrays(arrays, loop);
-  return loop;
-}
-
 double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
 }
@@ -82,7 +64,7 @@ struct Agreement {
 /// Steps the stick phase from the plain run's t = 0 to `step` and compares with the plain run there.
 Agreement compare_at(const LayerModel& m, const PlainRun& plain, StickPhase& stick, std::int64_t step) {
   const auto law = make_friction_law(m.config.friction);
-  const LoopState start = loop_state(m, plain.state(0));
+  const LoopState start = captured_loop_state(m, plain.state(0));
   stick.start(start);
   Agreement a;
   const RunRecord& rows = plain.record();
@@ -123,7 +105,7 @@ Agreement compare_at(const LayerModel& m, const PlainRun& plain, StickPhase& sti
   }
   LoopState now = start;
   stick.reconstruct(now);
-  const LoopState reference = loop_state(m, plain.state(step));
+  const LoopState reference = captured_loop_state(m, plain.state(step));
   const double dt = m.d.dt, beta = HHTCoefficients(m.config.time.hht_alpha, dt).beta;
   const double u_scale = reference.dynamics.u.lpNorm<Eigen::Infinity>();
   const auto difference = [](const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
@@ -185,7 +167,7 @@ TEST(StickPhase, IsPlainSteppingToRoundOffAndSlipsOnTheSameStep) {
       expect_round_off(a, what);
       // On to the first slip: the all-stick reactions leave the bound on the step plain stepping slips.
       const auto law = make_friction_law(m.config.friction);
-      const LoopState start = loop_state(m, plain.state(0));
+      const LoopState start = captured_loop_state(m, plain.state(0));
       stick.start(start);
       while (stick.step(*law->bounds(start.friction))) ASSERT_LT(stick.step_count(), plain.first_slip()) << what;
       EXPECT_EQ(stick.step_count() + 1, plain.first_slip()) << what;

@@ -88,4 +88,11 @@ WavenumberBlocks::WavenumberBlocks(const LayerModel& model)
   if (n_x % 2 == 0) weight[lanes - 1] = 1.0 / n_x;
 }
 
+BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
+  BandedLanes A = blocks.K;
+  const double b = hht.mass_factor(), k = 1 - hht.alpha;
+  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
+  return A;
+}
+
 }  // namespace slidewave

@@ -14,6 +14,7 @@
 
 #include "model/layer_model.hpp"
 #include "model/stick_phase/banded_lanes.hpp"
+#include "time/hht.hpp"
 
 namespace slidewave {
 
@@ -31,6 +32,9 @@ struct WavenumberBlocks {
   /// Parseval weights: x.y = sum_m weight(m) Re(X_m^H Y_m) for real x, y (1/n_x or 2/n_x).
   std::vector<double> weight;
 };
+
+/// The lanes' effective matrices b M_m + (1 - a) K_m of the HHT step (b = 1 / (beta dt^2)).
+BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht);
 
 /// Row r of lane 0 of the layer's vector (real: its column sum) from a lane-vector in the turned basis.
 inline double lane_zero_value(const LaneVectors& X, int r) {

@@ -10,14 +10,6 @@
 namespace slidewave {
 namespace {
 
-/// b M + (1 - a) K, lane by lane.
-BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
-  BandedLanes A = blocks.K;
-  const double b = hht.mass_factor(), k = 1 - hht.alpha;
-  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
-  return A;
-}
-
 /// y(rows [r0, r1)) -= (A restricted to the columns 0, 1) x_c, all lanes: the load of the held contact DOFs.
 void subtract_contact_columns(const BandedLanes& A, const LaneVectors& x_c, LaneVectors& y, int r0, int r1) {
   for (int r = r0; r < r1; ++r)
@@ -103,14 +95,7 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
 void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {
   const int s = blocks_.s, lanes = blocks_.lanes;
   ModeState& x = state_a_;
-  transform.forward(layer.u.data(), x.U);
-  transform.forward(layer.v.data(), x.V);
-  transform.forward(layer.acc.data(), x.A);
-  transform.forward(layer.Ku.data(), x.KU);
-  transform.forward(layer.r.data(), x.R);
-  transform.forward(layer.Mu_f.data(), x.MU);
-  transform.forward(layer.Mv_f.data(), x.MV);
-  transform.forward(layer.Ma_f.data(), x.MA);
+  transform_state(layer, transform, x);
   track_shift_ = shift_f != nullptr;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
   state_b_ = state_a_;
@@ -269,6 +254,34 @@ void WavenumberStepper::retire(int m) {
   double elastic = 0;
   for (int r = 0; r < blocks_.s; ++r) elastic += (std::conj(U_static_.get(r, m)) * KU_static_.get(r, m)).real();
   retired_elastic_ += 0.5 * blocks_.weight[m] * elastic;
+}
+
+void transform_state(const HHTState& layer, const RowTransform& transform, ModeState& x) {
+  transform.forward(layer.u.data(), x.U);
+  transform.forward(layer.v.data(), x.V);
+  transform.forward(layer.acc.data(), x.A);
+  transform.forward(layer.Ku.data(), x.KU);
+  transform.forward(layer.r.data(), x.R);
+  transform.forward(layer.Mu_f.data(), x.MU);
+  transform.forward(layer.Mv_f.data(), x.MV);
+  transform.forward(layer.Ma_f.data(), x.MA);
+}
+
+void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
+                      const Eigen::Vector2d& u_top, HHTState& s) {
+  const int n_f = layer.n_free, n_t = layer.n_top, n_y = layer.mesh.n_y;
+  s.u.resize(n_f + n_t);
+  transform.inverse(x.U, n_y, s.u.data());
+  s.u.tail(n_t) = layer.top_displacement(u_top.x(), u_top.y());
+  s.v = Eigen::VectorXd::Zero(n_f + n_t);
+  transform.inverse(x.V, n_y, s.v.data());
+  for (int k = n_f; k < n_f + n_t; k += 2) s.v(k) = layer.d.V0;
+  s.acc = Eigen::VectorXd::Zero(n_f + n_t);
+  transform.inverse(x.A, n_y, s.acc.data());
+  s.Ku = layer.K * s.u;
+  s.Mu_f = layer.M_ff_rows * s.u.head(n_f);
+  s.Mv_f = layer.M_ff_rows * s.v.head(n_f);
+  s.Ma_f = layer.M_ff_rows * s.acc.head(n_f);
 }
 
 }  // namespace slidewave

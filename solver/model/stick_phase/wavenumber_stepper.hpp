@@ -43,6 +43,14 @@ struct ModeState {
         R(2, lanes) {}
 };
 
+/// The lanes' state from the layer's: the DFT of its free rows' u, v, a, K u and mass products, and of r (not S).
+void transform_state(const HHTState& layer, const RowTransform& transform, ModeState& x);
+
+/// The layer's u, v, a (its top at u_top = (u_x, u_y) and moving at V0) by the inverse DFT of the lanes' state,
+/// and K u and the mass products by the real-space products (the contact reactions are left to the caller).
+void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
+                      const Eigen::Vector2d& u_top, HHTState& s);
+
 class WavenumberStepper {
  public:
   /// Factorizes the interior blocks of A_eff,m and K_m of every wavenumber.

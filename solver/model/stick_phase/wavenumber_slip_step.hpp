@@ -1,0 +1,83 @@
+#pragma once
+// A prototype (not wired into simulate()): the slip step of the layer on the rigid flat with its state in
+// wavenumbers, to measure whether keeping it there pays (docs/stick-phase.md, "Slip steps in wavenumbers").
+// The plain step (time/hht_stepper.hpp on linalg/block_circulant_solver.hpp) transforms the right-hand side
+// of all rows forward and the corrected displacement of all rows back, every step. Here the state stays in
+// the lanes m = 0..n_x/2 of model/stick_phase/wavenumber_stepper.hpp (u_y turned by -i: real symmetric K_m,
+// M_m; the mass products carried), and only the two contact rows cross over:
+//     free solve   A_eff,m U_free = b (M U~) - a K U(n) + a' [rows 0, 1] R(n) - [m = 0] (1-a) n_x K_fd0 u_top(n+1)
+//                  (band L D L^T of all s rows), u_free,c = inverse DFT of rows 0, 1;
+//     contact      r(n+1) by the loop's contact solve (model/stick_phase/slip_contact.hpp, the same W),
+//                  R(n+1) = its DFT (one mesh row);
+//     correction   U(n+1) = U_free + w (G_0 R_0 + G_1 R_1),  G_c = A_eff,m^-1 e_c (real per lane), the Newmark
+//                  update, K U by the band product (+ the top's share on lane 0), and the mass products,
+//                  M A(n+1) = -(1-a) K U(n+1) - a K U(n) + [rows 0, 1] (w R(n+1) + a' R(n)),
+//                  u_c(n+1) = inverse DFT of rows 0, 1 (the next q, the friction law's increment).
+// w = 1-a, a' = a (alpha weighting) or w = 1, a' = 0 (end), as in HHTStepper. The same discrete step as
+// plain stepping, to round-off. Not here: the energy ledger, the recorder's rows, opening detection,
+// checkpoints (what wiring it into simulate() needs; docs/stick-phase.md lists them).
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "contact/friction_law.hpp"
+#include "model/layer_model.hpp"
+#include "model/loop_state.hpp"
+#include "model/stick_phase/banded_lanes.hpp"
+#include "model/stick_phase/row_transform.hpp"
+#include "model/stick_phase/slip_contact.hpp"
+#include "model/stick_phase/wavenumber_blocks.hpp"
+#include "model/stick_phase/wavenumber_stepper.hpp"
+
+namespace slidewave {
+
+class WavenumberSlipStep {
+ public:
+  /// @param layer  the layer (must outlive this object); u_x_top: the preload's top shear displacement
+  /// @param W      the loop's Delassus operator (PlainSlipStep::delassus(); must outlive this object)
+  /// @param law    the friction law (must outlive this object)
+  WavenumberSlipStep(const LayerModel& layer, double u_x_top, const Eigen::MatrixXd& W,
+                     const GaussSeidelSettings& settings, const FrictionLaw& law);
+
+  /// From the layer's real-space loop state (rigid flat): the DFT of u, v, a, K u, the mass products, r.
+  void start(const LoopState& loop);
+  /// The three parts of a step (timed apart by the bench), in this order; step() does all three.
+  void solve_free();
+  GaussSeidelReport solve_contact();
+  void correct();
+  GaussSeidelReport step();
+
+  std::int64_t step_count() const { return step_; }
+  /// Reactions and contact displacements of the current step (2 per contact node, real space).
+  const Eigen::VectorXd& reactions() const { return r_; }
+  const Eigen::VectorXd& contact_displacement() const { return u_contact_; }
+  const std::vector<ContactState>& contact_states() const { return contact_states_; }
+  const ModeState& modes() const { return state_; }
+  /// The layer's loop state at the current step: dynamics (K u and the mass products by the real-space
+  /// products, as StickPhase::reconstruct makes them), contact states, friction memory, step. The energy
+  /// sums and the recorder's state are left as they were (not booked here).
+  void reconstruct(LoopState& loop) const;
+
+ private:
+  Eigen::Vector2d top_after(std::int64_t step) const;
+
+  const LayerModel& layer_;
+  HHTCoefficients hht_;
+  double u_x_top_, w_, w_previous_;
+  const FrictionLaw& law_;
+  WavenumberBlocks blocks_;
+  RowTransform transform_;
+  BandedLaneFactor A_eff_;         ///< A_eff,m = b M_m + (1-a) K_m on all s rows
+  std::vector<double> G0_, G1_;    ///< w A_eff,m^-1 e_0, w A_eff,m^-1 e_1 (row r, lane m at r lanes + m)
+  ModeState state_;                ///< time n (updated in place by correct(); its S is not used)
+  LaneVectors U_next_, KU_next_, R_next_;  ///< the step's right-hand side -> U_free -> U(n+1); K U(n+1); R(n+1)
+  SlipContact contact_;
+  std::vector<ContactState> contact_states_;
+  FrictionState friction_;
+  std::int64_t step_ = 0;
+  bool predicted_ = false;  ///< the last correct() made the next free solve's right-hand side (in U_next_)
+  Eigen::Vector2d u_top_next_;
+  Eigen::VectorXd u_free_contact_, u_contact_, u_contact_next_, r_, du_;
+};
+
+}  // namespace slidewave
