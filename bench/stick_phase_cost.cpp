@@ -15,12 +15,12 @@
 
 #include "contact/friction_law.hpp"
 #include "mesh_options.hpp"
-#include "thread_cpu_time.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state_arrays.hpp"
 #include "model/simulation.hpp"
 #include "model/stick_phase/plain_slip_step.hpp"
 #include "model/stick_phase/stick_phase.hpp"
+#include "thread_cpu_time.hpp"
 
 namespace {
 
@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
       slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
       config.output.progress = slidewave::ProgressMode::never;
       slidewave::LayerModel model(config);
-      model.stick_phase_in_wavenumbers = false;  // plain stepping, as before the stick phase was wired
+      model.steps_in_wavenumbers = false;  // plain stepping, as before the stick phase was wired
       UntilFirstSlip plain;
       const slidewave::RunRecord record = slidewave::simulate(model, {}, &plain.stop, nullptr, &plain);
       const double plain_ms = 1e3 * plain.cpu_stick / static_cast<double>(plain.first_slip - 1);

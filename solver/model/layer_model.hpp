@@ -27,10 +27,10 @@ struct LayerModel {
   int n_free, n_top, n_contact_dofs;
   /// The deformable substrate as a layer in its mirrored frame (model/substrate.hpp); null: the rigid flat.
   std::shared_ptr<const LayerModel> substrate;
-  /// Steps the stick phase in wavenumbers where it applies (model/stick_phase/stick_phase_run.hpp); false:
-  /// every step plainly. Not a configuration key: both give the same solution to round-off, and the tests
-  /// use plain stepping as the phase's oracle.
-  bool stick_phase_in_wavenumbers = true;
+  /// Steps the stick phase and the slip phase in wavenumbers where they apply (model/stick_phase/
+  /// stick_phase_run.hpp, slip_phase_run.hpp); false: every step plainly. Not a configuration key: both give
+  /// the same solution to round-off, and the tests use plain stepping as the phases' oracle.
+  bool steps_in_wavenumbers = true;
 
   /// Factorizes a free-free matrix (K_ff, M_ff, K_eff) with the configured linear solver.
   std::unique_ptr<LinearSolver> factorize(const Eigen::SparseMatrix<double>& A) const;

@@ -90,11 +90,12 @@ void Recorder::record_step(LoopState& loop, const Eigen::VectorXd& u_previous, c
   record_due_snapshots(t, source, loop.recording);
 }
 
-void Recorder::record_stick_step(LoopState& view, double e_kin, double e_el, const Eigen::VectorXd& u_contact_previous,
-                                 const std::function<LoopState()>& full) {
+void Recorder::record_wavenumber_step(LoopState& view, double e_kin, double e_el,
+                                      const Eigen::VectorXd& u_contact_previous, const GaussSeidelReport& report,
+                                      const std::function<LoopState()>& full) {
   const double t = view.step * dt_;
   const RowSource source{view, view.energy, e_kin, e_el};
-  record_global(t, source, 0, 0);
+  record_global(t, source, report.iterations, report.residual);
   if (view.step % model_.config.output.interface_stride == 0) record_interface(t, source, u_contact_previous);
   const auto& next = view.recording.next_snapshot;
   if (next < snapshot_times_.size() && t >= snapshot_times_[next] - 0.5 * dt_) {

@@ -48,12 +48,12 @@ class Recorder {
   /// u_previous_substrate: the substrate's DOFs one step before (null without a substrate).
   void record_step(LoopState& loop, const Eigen::VectorXd& u_previous, const GaussSeidelReport& report,
                    const Eigen::VectorXd* u_previous_substrate = nullptr);
-  /// Rows of a step of the stick phase (model/stick_phase/stick_phase.hpp): `view` holds the step, the
-  /// contact displacements (dynamics.u, n_contact entries), the reactions, the contact states and the sums;
-  /// u_contact_previous: the contact displacements one step before; `full`: called for the whole state when
-  /// a snapshot is due.
-  void record_stick_step(LoopState& view, double e_kin, double e_el, const Eigen::VectorXd& u_contact_previous,
-                         const std::function<LoopState()>& full);
+  /// Rows of a step taken in wavenumbers (model/stick_phase/): `view` holds the step, the contact
+  /// displacements (dynamics.u, n_contact entries), the reactions, the contact states and the sums;
+  /// u_contact_previous: the contact displacements one step before; `report`: the step's contact solve;
+  /// `full`: called for the whole state when a snapshot is due.
+  void record_wavenumber_step(LoopState& view, double e_kin, double e_el, const Eigen::VectorXd& u_contact_previous,
+                              const GaussSeidelReport& report, const std::function<LoopState()>& full);
   /// True at the first step at which a contact node opens more than opening_threshold (then records its time).
   bool detect_first_opening(LoopState& loop);
   /// Last apparent friction T/N recorded (for progress reports).

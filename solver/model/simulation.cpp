@@ -16,7 +16,10 @@
 #include "model/loop_state_arrays.hpp"
 #include "model/mode_seed.hpp"
 #include "model/recorder.hpp"
+#include "model/stick_phase/phase_support.hpp"
+#include "model/stick_phase/slip_phase_run.hpp"
 #include "model/stick_phase/stick_phase_run.hpp"
+#include "model/stick_phase/wavenumber_slip_step.hpp"
 #include "model/substrate.hpp"
 #include "time/hht_stepper.hpp"
 
@@ -174,14 +177,6 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
   }
 }
 
-/// time.stop_after_opening: once the interface has opened at t, the run ends that long after.
-void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop) {
-  if (time.stop_after_opening && t + *time.stop_after_opening < loop.t_end) {
-    loop.t_end = t + *time.stop_after_opening;
-    loop.end_reason = "stop_after_opening";
-  }
-}
-
 /// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
 /// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
 /// A step that follows an all-stick step first tries the exact all-stick solution (contact/all_stick.hpp;
@@ -250,10 +245,17 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   }
   const std::int64_t n_steps_max = step_count(m.d);
   if (observer) observer->setup_done();
-  const RunObserver::Capture capture = [&loop] { return to_arrays(loop); };
+  // The slip phase's lanes, once they hold the state (model/stick_phase/slip_phase_run.hpp): checkpoints keep them.
+  std::unique_ptr<WavenumberSlipStep> slip;
+  const RunObserver::Capture capture = [&loop, &slip] {
+    StateArrays arrays = to_arrays(loop);
+    if (slip && slip->owns_state()) slip->save(arrays);
+    return arrays;
+  };
   const bool stick_phase = stick_phase_applies(m, loop);
   LoopState seeded;  // the state at t = 0, which the stick phase of a resumed run replays from
-  if (const StateArrays* resumed = observer ? observer->start_state() : nullptr) {
+  const StateArrays* resumed = observer ? observer->start_state() : nullptr;
+  if (resumed) {
     if (stick_phase) seeded = loop;
     loop.recording.u_contact_start.resize(n_c);
     restore_from_arrays(*resumed, loop);
@@ -261,24 +263,40 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     recorder.record_start(loop, pre.contact_iterations);
     if (observer) observer->after_step(recorder.rows(), capture);
   }
+  const bool slip_phase = slip_phase_applies(m);
+  const bool resumed_in_slip_phase = slip_phase && resumed && WavenumberSlipStep::saved_in(*resumed);
   watch.lap(&StepProfile::setup);
   ProgressPacer pacer(progress);
   std::string failure;  // why the run stopped early, if it did
+  const PhaseHooks hooks{[&] { return stop_requested && stop_requested->load(); },
+                         [&](double StepProfile::*part) { watch.lap(part); },
+                         [&](const LoopState& view, int contact_sweeps, const RunObserver::Capture& full) {
+                           watch.count(view.step, contact_sweeps);
+                           pacer.step_done(view.step * hht.dt, view, recorder);
+                           if (observer) observer->after_step(recorder.rows(), full);
+                         }};
 
   // 4. The stick phase in wavenumbers, while every node sticks (model/stick_phase/stick_phase_run.hpp).
-  if (stick_phase && all_stuck(loop.contact)) {
-    const StickPhaseHooks hooks{[&] { return stop_requested && stop_requested->load(); },
-                                [&](const LoopState& view, const RunObserver::Capture& full) {
-                                  watch.count(view.step, 0);
-                                  pacer.step_done(view.step * hht.dt, view, recorder);
-                                  if (observer) observer->after_step(recorder.rows(), full);
-                                }};
+  if (stick_phase && !resumed_in_slip_phase && all_stuck(loop.contact)) {
     run_stick_phase(m, pre.u_x_top, *friction, loop.step > 0 ? seeded : loop, n_steps_max, recorder, hooks, loop);
     watch.lap(&StepProfile::stick_phase);
     watch.count_stick_phase(loop.step);
   }
 
-  // 5. Time loop, up to the first step at or after t_end (which stop_after_opening may shorten).
+  // 5. The slip phase in wavenumbers, to the end of the run (model/stick_phase/slip_phase_run.hpp); made after
+  //    the stick phase has freed its lanes, so that the two never hold memory at once.
+  if (slip_phase) {
+    slip = std::make_unique<WavenumberSlipStep>(m, pre.u_x_top, W, settings, *friction);
+    if (resumed_in_slip_phase)
+      slip->restore(loop, *resumed);
+    else
+      slip->start(loop);
+    watch.lap(&StepProfile::setup);
+    failure = run_slip_phase(*slip, m, n_steps_max, recorder, hooks, loop);
+  }
+
+  // 6. Plain time loop (the substrate pair, the HHT terms of the ledger; and every run of a model stepped
+  //    plainly), up to the first step at or after t_end (which stop_after_opening may shorten).
   HHTState& s = loop.dynamics;
   ContactStep contact(n_c, W, settings);
   // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
@@ -286,13 +304,13 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
   };
   Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
-  while (failure.empty() && loop.step < n_steps_max && !(loop.step * hht.dt >= loop.t_end - 1e-9 * hht.dt)) {
+  while (failure.empty() && before_end(loop.step, n_steps_max, loop, hht.dt)) {
     if (stop_requested && stop_requested->load()) {
       failure = "interrupted";
       break;
     }
     const double t = (loop.step + 1) * hht.dt;
-    // 5a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
+    // 6a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
     stepper.predict(s, u_d_next);
     watch.lap(&StepProfile::predictor);
     const Eigen::VectorXd& u_free = stepper.solve_free();
@@ -302,20 +320,20 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       u_free_substrate = &sub->stepper.solve_free();
     }
     watch.lap(&StepProfile::free_solve);
-    // 5b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
+    // 6b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
     const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
     if (!report.converged) {
       failure = "contact_not_converged";
       break;
     }
     watch.lap(&StepProfile::contact);
-    // 5c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
+    // 6c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
     u_d_following = top_after(loop.step + 2);
     stepper.correct(contact.r_next, s, &u_d_following);
     if (sub) sub->stepper.correct(sub->load(contact.r_next), loop.substrate, &sub->u_bottom);
     u_d_next.swap(u_d_following);
     watch.lap(&StepProfile::correction);
-    // 5d. Energy ledger, friction memory, output rows, first opening.
+    // 6d. Energy ledger, friction memory, output rows, first opening.
     ++loop.step;
     contact.du = s.u.head(n_c) - stepper.u_previous().head(n_c);
     ledger.book_step(s, stepper.u_previous(), stepper.r_previous(), contact.du, loop.energy);

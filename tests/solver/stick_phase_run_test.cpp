@@ -62,7 +62,7 @@ TEST_P(StickPhaseRunAlpha, RecordsThePlainRunToRoundOffAndSlipsOnTheSameStep) {
   const RunConfig config = paper_case(16, 800.0, c.hht_alpha);
   const LayerModel phased(config);
   LayerModel plain(config);
-  plain.stick_phase_in_wavenumbers = false;
+  plain.steps_in_wavenumbers = false;
   const RunRecord a = simulate(phased), b = simulate(plain);
   const std::int64_t onset = first_slip(b);
   ASSERT_GT(onset, 100) << "the paper case sticks for a while";
@@ -144,8 +144,10 @@ TEST(StickPhaseRun, AppliesOnTheRigidFlatWithCoulombFrictionWhileEveryNodeSticks
   pair.substrate = SubstrateConfig{3 * pair.material.E, pair.material.nu, pair.material.rho, pair.geometry.H};
   EXPECT_FALSE(stick_phase_applies(LayerModel(pair), sticking));
   LayerModel plain(testing::make_config());
-  plain.stick_phase_in_wavenumbers = false;
+  plain.steps_in_wavenumbers = false;
   EXPECT_FALSE(stick_phase_applies(plain, sticking));
+  EXPECT_FALSE(
+      stick_phase_applies(LayerModel(testing::make_config({{"numerics", {{"linear_solver", "cholmod"}}}})), sticking));
 }
 
 }  // namespace

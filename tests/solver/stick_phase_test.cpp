@@ -143,7 +143,7 @@ void expect_round_off(const Agreement& a, const std::string& what) {
 /// The model stepped plainly: the oracle.
 LayerModel plain_stepping(const RunConfig& config) {
   LayerModel m(config);
-  m.stick_phase_in_wavenumbers = false;
+  m.steps_in_wavenumbers = false;
   return m;
 }
 

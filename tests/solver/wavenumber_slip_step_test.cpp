@@ -47,7 +47,7 @@ double max_abs(const Eigen::VectorXd& x) { return x.lpNorm<Eigen::Infinity>(); }
 TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
   constexpr std::int64_t kAfter = 3, kSteps = 40;
   LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 16}}}, {"time", {{"t_end", 1000.0}}}}));
-  m.stick_phase_in_wavenumbers = false;
+  m.steps_in_wavenumbers = false;
   AfterFirstSlip observer(kAfter, kSteps);
   const RunRecord record = simulate(m, {}, &observer.stop, nullptr, &observer);
   ASSERT_GT(observer.first_slip, 100) << "the paper case sticks for a while";
@@ -84,12 +84,14 @@ TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
     const HHTState &x = plain.state().dynamics, &y = rebuilt.dynamics;
     const double u_bound = 10 * k * eps * max_abs(x.u), v_bound = u_bound / beta, r_bound = W_inverse_norm * u_bound;
     const double du = max_abs(x.u - y.u), dv = dt * max_abs(x.v - y.v), dr = max_abs(x.r - y.r);
-    const bool slipping = std::count(plain.state().contact.begin(), plain.state().contact.end(), ContactState::slip) > 0;
+    const bool slipping =
+        std::count(plain.state().contact.begin(), plain.state().contact.end(), ContactState::slip) > 0;
     slipping_steps += slipping;
-    std::printf("[slip step %2lld] sweeps %2d / %2d%s: against max|u|: u %.1e, dt v %.1e; against max|r|: r %.1e; "
-                "against the bounds: %.2f %.2f %.2f\n",
-                static_cast<long long>(k), a.iterations, b.iterations, slipping ? "" : " (all stick)",
-                du / max_abs(x.u), dv / max_abs(x.u), dr / max_abs(x.r), du / u_bound, dv / v_bound, dr / r_bound);
+    std::printf(
+        "[slip step %2lld] sweeps %2d / %2d%s: against max|u|: u %.1e, dt v %.1e; against max|r|: r %.1e; "
+        "against the bounds: %.2f %.2f %.2f\n",
+        static_cast<long long>(k), a.iterations, b.iterations, slipping ? "" : " (all stick)", du / max_abs(x.u),
+        dv / max_abs(x.u), dr / max_abs(x.r), du / u_bound, dv / v_bound, dr / r_bound);
     EXPECT_TRUE(plain.state().contact == rebuilt.contact) << "step " << k;
     worst_u = std::max(worst_u, du / u_bound);
     worst_v = std::max(worst_v, dv / v_bound);

@@ -1,5 +1,5 @@
 #pragma once
-// simulate()'s slip step on the rigid flat (model/simulation.cpp, section 5: predictor and free solve,
+// simulate()'s slip step on the rigid flat (model/simulation.cpp, section 6: predictor and free solve,
 // contact solve, correction with the Newmark update, friction memory) outside simulate(), from a captured
 // loop state: the reference the wavenumber slip step (model/stick_phase/wavenumber_slip_step.hpp) is
 // compared and timed against. The same operations in the same order as the loop, so the same bits; not

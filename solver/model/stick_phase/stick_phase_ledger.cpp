@@ -49,23 +49,42 @@ void StickPhaseLedger::lane_products(const LaneProduct* products, int count, int
           for (int m = 0; m < n; ++m) sum[m] += x[m] * y[m];
       }
   }
+  for (int q = 0; q < count; ++q) sums[q] = weighted(per_lane_.data() + static_cast<std::size_t>(q) * n, n);
+}
+
+double StickPhaseLedger::weighted(const double* per_lane, int n) const {
   const double* w = blocks_.weight.data();
-  for (int q = 0; q < count; ++q) {
-    const double* sum = per_lane_.data() + static_cast<std::size_t>(q) * n;
-    double total = 0;
-    for (int m = 0; m < n; ++m) total += w[m] * sum[m];
-    sums[q] = total;
-  }
+  double total = 0;
+  for (int m = 0; m < n; ++m) total += w[m] * per_lane[m];
+  return total;
 }
 
 double StickPhaseLedger::kinetic(const ModeState& x, int n_active) const {
-  return 0.5 * (dot(x.V, x.MV, n_active) + 2 * M_fd_v_top_.dot(lane_zero(x.V)) + kinetic_top_);
+  return kinetic_from(dot(x.V, x.MV, n_active), x.V);
+}
+
+double StickPhaseLedger::kinetic(const double* v_M_v_per_lane, int n, const LaneVectors& V) const {
+  return kinetic_from(weighted(v_M_v_per_lane, n), V);
+}
+
+double StickPhaseLedger::kinetic_from(double v_M_v, const LaneVectors& V) const {
+  return 0.5 * (v_M_v + 2 * M_fd_v_top_.dot(lane_zero(V)) + kinetic_top_);
 }
 
 double StickPhaseLedger::elastic(const ModeState& x, int n_active, double retired_elastic,
                                  const Eigen::Vector2d& u_top) const {
-  const Eigen::Vector2d top = blocks_.K_fd0.transpose() * lane_zero(x.U) + blocks_.n_x * (blocks_.K_dd0 * u_top);
-  return 0.5 * (dot(x.U, x.KU, n_active) + u_top.dot(top)) + retired_elastic;
+  return elastic_from(dot(x.U, x.KU, n_active), x.U, retired_elastic, u_top);
+}
+
+double StickPhaseLedger::elastic(const double* u_K_u_per_lane, int n, const LaneVectors& U, double retired_elastic,
+                                 const Eigen::Vector2d& u_top) const {
+  return elastic_from(weighted(u_K_u_per_lane, n), U, retired_elastic, u_top);
+}
+
+double StickPhaseLedger::elastic_from(double u_K_u, const LaneVectors& U, double retired_elastic,
+                                      const Eigen::Vector2d& u_top) const {
+  const Eigen::Vector2d top = blocks_.K_fd0.transpose() * lane_zero(U) + blocks_.n_x * (blocks_.K_dd0 * u_top);
+  return 0.5 * (u_K_u + u_top.dot(top)) + retired_elastic;
 }
 
 Eigen::Vector2d StickPhaseLedger::top_force(const ModeState& x, const Eigen::Vector2d& u_top) const {
@@ -77,12 +96,8 @@ void StickPhaseLedger::book_step(const ModeState& before, const ModeState& after
                                  const Eigen::Vector2d& u_top_before, const Eigen::Vector2d& u_top_after,
                                  const Eigen::VectorXd& du_contact, const Eigen::VectorXd& r_before,
                                  const Eigen::VectorXd& r_after, EnergySums& sums) const {
-  for (Eigen::Index k = 0; k < du_contact.size() / 2; ++k) {
-    sums.dissipation_friction -= 0.5 * (r_before(2 * k) + r_after(2 * k)) * du_contact(2 * k);
-    sums.work_contact_normal -= 0.5 * (r_before(2 * k + 1) + r_after(2 * k + 1)) * du_contact(2 * k + 1);
-  }
-  sums.work_external +=
-      0.5 * (top_force(before, u_top_before) + top_force(after, u_top_after)).dot(u_top_after - u_top_before);
+  book_work(top_force(before, u_top_before), top_force(after, u_top_after), u_top_before, u_top_after, du_contact,
+            r_before, r_after, sums);
   if (!sums.hht.on()) return;
   // The three HHT terms of EnergyLedger::book_hht_terms, each a quadratic form of the two states, the mass
   // products carried: v.M da = (v_b + v_a).(M a_a - M a_b), da.M a = (a_a - a_b).(M a_b + M a_a).
@@ -98,6 +113,17 @@ void StickPhaseLedger::book_step(const ModeState& before, const ModeState& after
   sums.hht.gamma -= dt * (hht_.gamma - 0.5) * v_M_da;
   sums.hht.beta += dt * dt * (hht_.beta - 0.5 * hht_.gamma) * da_M_a;
   sums.hht.shift -= du_s;
+}
+
+void StickPhaseLedger::book_work(const Eigen::Vector2d& F_top_before, const Eigen::Vector2d& F_top_after,
+                                 const Eigen::Vector2d& u_top_before, const Eigen::Vector2d& u_top_after,
+                                 const Eigen::VectorXd& du_contact, const Eigen::VectorXd& r_before,
+                                 const Eigen::VectorXd& r_after, EnergySums& sums) const {
+  for (Eigen::Index k = 0; k < du_contact.size() / 2; ++k) {
+    sums.dissipation_friction -= 0.5 * (r_before(2 * k) + r_after(2 * k)) * du_contact(2 * k);
+    sums.work_contact_normal -= 0.5 * (r_before(2 * k + 1) + r_after(2 * k + 1)) * du_contact(2 * k + 1);
+  }
+  sums.work_external += 0.5 * (F_top_before + F_top_after).dot(u_top_after - u_top_before);
 }
 
 }  // namespace slidewave

@@ -3,15 +3,11 @@
 #include <memory>
 
 #include "model/loop_state_arrays.hpp"
+#include "model/stick_phase/phase_support.hpp"
 #include "model/stick_phase/stick_phase.hpp"
 
 namespace slidewave {
 namespace {
-
-/// The step condition of simulate()'s loop.
-bool before_end(std::int64_t step, std::int64_t n_steps_max, const LoopState& loop, double dt) {
-  return step < n_steps_max && !(step * dt >= loop.t_end - 1e-9 * dt);
-}
 
 /// Replays the phase silently up to the checkpoint's step; true if it gets there with the checkpoint's
 /// state bit for bit.
@@ -28,25 +24,18 @@ bool replay_to(StickPhase& stick, const FrictionBounds& bounds, const LoopState&
 
 bool stick_phase_applies(const LayerModel& m, const LoopState& loop) {
   const FrictionConfig& f = m.config.friction;
-  return m.stick_phase_in_wavenumbers && !m.substrate && f.f > 0 && f.regularization == Regularization::none &&
-         all_stuck(loop.contact);
+  return may_step_in_wavenumbers(m) && f.f > 0 && f.regularization == Regularization::none && all_stuck(loop.contact);
 }
 
 void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& friction, const LoopState& seeded,
-                     std::int64_t n_steps_max, Recorder& recorder, const StickPhaseHooks& hooks, LoopState& loop) {
+                     std::int64_t n_steps_max, Recorder& recorder, const PhaseHooks& hooks, LoopState& loop) {
   StickPhase stick(m, u_x_top);
   stick.start(seeded);
   const std::unique_ptr<FrictionBounds> bounds = friction.bounds(loop.friction);
   if (loop.step > 0 && !replay_to(stick, *bounds, loop)) return;
 
   // The recorder reads the contact part of the state only: the view carries that.
-  LoopState view;
-  view.step = loop.step;
-  view.energy = loop.energy;
-  view.recording = loop.recording;
-  view.contact = loop.contact;
-  view.dynamics.u = loop.dynamics.u.head(m.n_contact_dofs);
-  view.dynamics.r = loop.dynamics.r;
+  LoopState view = contact_view(m, loop);
   Eigen::VectorXd u_contact_previous = view.dynamics.u;
   const auto full_state = [&] {
     LoopState full = loop;
@@ -60,17 +49,12 @@ void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& fri
     if (!stick.step(*bounds)) break;
     view.step = stick.step_count();
     view.dynamics.r = stick.reactions();
-    const EnergySums& e = stick.sums();
-    view.energy.work_external = e.work_external;
-    view.energy.dissipation_friction = e.dissipation_friction;
-    view.energy.work_contact_normal = e.work_contact_normal;
-    view.energy.hht.gamma = e.hht.gamma;
-    view.energy.hht.beta = e.hht.beta;
-    view.energy.hht.shift = e.hht.shift;
+    copy_running_sums(stick.sums(), view.energy);
     u_contact_previous.swap(view.dynamics.u);
     view.dynamics.u = stick.contact_displacement();
-    recorder.record_stick_step(view, stick.kinetic(), stick.elastic(), u_contact_previous, full_state);
-    hooks.after_step(view, capture);
+    recorder.record_wavenumber_step(view, stick.kinetic(), stick.elastic(), u_contact_previous,
+                                    GaussSeidelReport{0, 0.0, true}, full_state);
+    hooks.after_step(view, 0, capture);
   }
   const RecorderState recording = view.recording;
   stick.reconstruct(loop);

@@ -1,5 +1,8 @@
 #include "model/stick_phase/wavenumber_slip_step.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "linalg/vector_clones.hpp"
@@ -17,16 +20,19 @@ WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, 
       blocks_(layer),
       transform_(layer.mesh.n_x),
       A_eff_(effective_band(blocks_, hht_), 0),
-      state_(blocks_.s, blocks_.lanes),
+      state_(blocks_.s, blocks_.lanes, false),
       U_next_(blocks_.s, blocks_.lanes),
       KU_next_(blocks_.s, blocks_.lanes),
       R_next_(2, blocks_.lanes),
       contact_(layer.n_contact_dofs, W, settings),
+      ledger_(blocks_, hht_, layer.d.V0),
       u_free_contact_(layer.n_contact_dofs),
       u_contact_(layer.n_contact_dofs),
       u_contact_next_(layer.n_contact_dofs),
       r_(layer.n_contact_dofs),
-      du_(layer.n_contact_dofs) {
+      du_(layer.n_contact_dofs),
+      v_M_v_(blocks_.lanes),
+      u_K_u_(blocks_.lanes) {
   // The response of every lane to a unit load on its contact row c (real: a real symmetric A_eff,m and a real
   // load in the turned basis), scaled by w.
   const int s = blocks_.s, lanes = blocks_.lanes;
@@ -46,14 +52,65 @@ Eigen::Vector2d WavenumberSlipStep::top_after(std::int64_t step) const {
 }
 
 void WavenumberSlipStep::start(const LoopState& loop) {
-  const HHTState& layer = loop.dynamics;
-  transform_state(layer, transform_, state_);
+  transform_state(loop.dynamics, transform_, state_);
+  adopt(loop, false);
+}
+
+void WavenumberSlipStep::adopt(const LoopState& loop, bool owns_state) {
   step_ = loop.step;
-  predicted_ = false;
   contact_states_ = loop.contact;
   friction_ = loop.friction;
-  u_contact_ = layer.u.head(layer_.n_contact_dofs);
-  r_ = layer.r;
+  r_ = loop.dynamics.r;
+  sums_ = loop.energy;
+  owns_state_ = owns_state;
+  // The next free solve makes its right-hand side from the state, with the operations by which correct()
+  // would have made it: the same bits.
+  predicted_ = false;
+  F_top_ = ledger_.top_force(state_, top_after(step_));
+  kinetic_ = ledger_.kinetic(state_, blocks_.lanes);
+  elastic_ = ledger_.elastic(state_, blocks_.lanes, 0.0, top_after(step_));
+  transform_.inverse(state_.U, 1, u_contact_.data());
+}
+
+namespace {
+
+/// The lanes' state in a checkpoint: its vectors by name (the same list writes and reads them).
+template <typename State, typename F>
+void for_each_lane_vector(State& x, F&& visit) {
+  visit("U", x.U);
+  visit("V", x.V);
+  visit("A", x.A);
+  visit("KU", x.KU);
+  visit("MU", x.MU);
+  visit("MV", x.MV);
+  visit("MA", x.MA);
+  visit("R", x.R);
+}
+
+const std::string kArrayPrefix = "wavenumber_slip_";
+
+}  // namespace
+
+void WavenumberSlipStep::save(StateArrays& arrays) const {
+  for_each_lane_vector(state_, [&](const char* name, const LaneVectors& X) {
+    arrays.reals[kArrayPrefix + name + "_re"] = X.re;
+    arrays.reals[kArrayPrefix + name + "_im"] = X.im;
+  });
+}
+
+bool WavenumberSlipStep::saved_in(const StateArrays& arrays) { return arrays.reals.count(kArrayPrefix + "U_re") > 0; }
+
+void WavenumberSlipStep::restore(const LoopState& loop, const StateArrays& arrays) {
+  for_each_lane_vector(state_, [&](const char* name, LaneVectors& X) {
+    for (const char* part : {"_re", "_im"}) {
+      const auto found = arrays.reals.find(kArrayPrefix + name + part);
+      std::vector<double>& values = part[1] == 'r' ? X.re : X.im;
+      if (found == arrays.reals.end() || found->second.size() != values.size())
+        throw std::runtime_error("checkpoint: " + kArrayPrefix + name + part + " is missing or has another size");
+      values = found->second;
+    }
+  });
+  adopt(loop, true);
 }
 
 namespace {
@@ -65,8 +122,8 @@ struct StepCoefficients {
 
 StepCoefficients step_coefficients(const HHTCoefficients& hht, double w, double a_previous) {
   const double dt = hht.dt;
-  return {dt, hht.mass_factor(), dt * dt * (0.5 - hht.beta), hht.alpha, hht.gamma, 1 - hht.gamma,
-          hht.beta * dt * dt, w, a_previous};
+  return {dt, hht.mass_factor(), dt * dt * (0.5 - hht.beta), hht.alpha, hht.gamma, 1 - hht.gamma, hht.beta * dt * dt,
+          w,  a_previous};
 }
 
 /// Pointer to row r, part `part` (0: real, 1: imaginary) of a lane-vector.
@@ -126,6 +183,16 @@ __attribute__((always_inline)) inline void mass_lanes(const double* __restrict K
   }
 }
 
+/// The lanes of one row and part of the energies' forms, accumulated: v.M v and u.K u.
+__attribute__((always_inline)) inline void energy_lanes(const double* __restrict v, const double* __restrict Mv,
+                                                        const double* __restrict u, const double* __restrict Ku,
+                                                        double* __restrict v_M_v, double* __restrict u_K_u, int lanes) {
+  for (int m = 0; m < lanes; ++m) {
+    v_M_v[m] += v[m] * Mv[m];
+    u_K_u[m] += u[m] * Ku[m];
+  }
+}
+
 }  // namespace
 
 SLIDEWAVE_VECTOR_CLONES
@@ -144,8 +211,7 @@ void WavenumberSlipStep::solve_free() {
 }
 
 GaussSeidelReport WavenumberSlipStep::solve_contact() {
-  const GaussSeidelReport report =
-      contact_.solve(u_free_contact_, u_contact_, r_, law_, friction_, contact_states_);
+  const GaussSeidelReport report = contact_.solve(u_free_contact_, u_contact_, r_, law_, friction_, contact_states_);
   transform_.forward(contact_.r_next.data(), R_next_);
   return report;
 }
@@ -156,6 +222,8 @@ void WavenumberSlipStep::correct() {
   const StepCoefficients k = step_coefficients(hht_, w_, w_previous_);
   ModeState& x = state_;
   const Eigen::Vector2d u_top_following = top_after(step_ + 2);
+  std::fill(v_M_v_.begin(), v_M_v_.end(), 0.0);
+  std::fill(u_K_u_.begin(), u_K_u_.end(), 0.0);
   // One sweep down the rows, so that the rows it works on stay in cache: row r corrected (U_next_ from U_free
   // to U(n+1); A, V in place), then row q = r - p, whose band reaches row r at most: K U(n+1) into KU_next_,
   // the mass products in place, and the next step's right-hand side into x.U (U(n) is not read after its
@@ -173,8 +241,11 @@ void WavenumberSlipStep::correct() {
     add_to_lane_zero(KU_next_, q, n_x * blocks_.K_fd0.row(q).dot(u_top_next_));
     for (int part = 0; part < 2; ++part)
       mass_lanes(row(KU_next_, q, part), row(x.KU, q, part), q < 2 ? row(R_next_, q, part) : nullptr,
-                 q < 2 ? row(x.R, q, part) : nullptr, row(x.MA, q, part), row(x.MV, q, part), row(x.MU, q, part),
-                 lanes, k);
+                 q < 2 ? row(x.R, q, part) : nullptr, row(x.MA, q, part), row(x.MV, q, part), row(x.MU, q, part), lanes,
+                 k);
+    for (int part = 0; part < 2; ++part)
+      energy_lanes(row(x.V, q, part), row(x.MV, q, part), row(U_next_, q, part), row(KU_next_, q, part), v_M_v_.data(),
+                   u_K_u_.data(), lanes);
     free_rhs_row(x, KU_next_, q < 2 ? &R_next_ : nullptr, q, lanes, k, x.U);
     add_to_lane_zero(x.U, q, -(1 - k.a) * n_x * blocks_.K_fd0.row(q).dot(u_top_following));
   }
@@ -184,11 +255,17 @@ void WavenumberSlipStep::correct() {
   std::swap(x.KU, KU_next_);
   std::swap(x.R, R_next_);
   du_ = u_contact_next_ - u_contact_;
+  kinetic_ = ledger_.kinetic(v_M_v_.data(), lanes, x.V);
+  elastic_ = ledger_.elastic(u_K_u_.data(), lanes, x.U, 0.0, u_top_next_);
+  const Eigen::Vector2d F_top_next = ledger_.top_force(x, u_top_next_);
+  ledger_.book_work(F_top_, F_top_next, top_after(step_), u_top_next_, du_, r_, contact_.r_next, sums_);
+  F_top_ = F_top_next;
   r_ = contact_.r_next;
   law_.update(du_, r_, k.dt, friction_);
   u_contact_.swap(u_contact_next_);
   u_top_next_ = u_top_following;
   predicted_ = true;
+  owns_state_ = true;
   ++step_;
 }
 
@@ -203,6 +280,8 @@ void WavenumberSlipStep::reconstruct(LoopState& loop) const {
   HHTState& s = loop.dynamics;
   rebuild_dynamics(layer_, transform_, state_, top_after(step_), s);
   s.r = r_;
+  loop.energy = sums_;
+  loop.energy.F_top = s.Ku.tail(layer_.n_top) + layer_.M_top_rows * s.acc;
   loop.contact = contact_states_;
   loop.friction = friction_;
   loop.step = step_;

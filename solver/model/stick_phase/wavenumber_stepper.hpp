@@ -29,9 +29,9 @@ namespace slidewave {
 struct ModeState {
   LaneVectors U, V, A, KU;  ///< u, v, a, K u of the free rows (K u with the top's share)
   LaneVectors MU, MV, MA;   ///< M u, M v, M a of the free rows (M of the free DOFs: the top has a = 0)
-  LaneVectors S;            ///< the HHT shift term s (model/energy_ledger.hpp), if booked
+  LaneVectors S;            ///< the HHT shift term s (model/energy_ledger.hpp), if booked (else empty)
   LaneVectors R;            ///< contact reactions (2 rows)
-  ModeState(int s, int lanes)
+  ModeState(int s, int lanes, bool with_shift = true)
       : U(s, lanes),
         V(s, lanes),
         A(s, lanes),
@@ -39,7 +39,7 @@ struct ModeState {
         MU(s, lanes),
         MV(s, lanes),
         MA(s, lanes),
-        S(s, lanes),
+        S(with_shift ? s : 0, lanes),
         R(2, lanes) {}
 };
 
