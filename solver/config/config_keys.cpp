@@ -210,10 +210,11 @@ std::vector<ConfigKey> make_table() {
 
       choice("numerics", "linear_solver",
              {{"spectral", LinearSolverKind::spectral}, {"cholmod", LinearSolverKind::cholmod}},
-             "`spectral` (FFT in x, exact for this uniform periodic mesh: the free solve and the correction "
-             "share one spectrum, one K_eff pass per step) or `cholmod` (general sparse Cholesky, two solves "
-             "per step: the oracle); both give the same discrete solution to round-off, which this chaotic "
-             "problem amplifies after slip onset",
+             "`spectral` (FFT in x, exact for this uniform periodic mesh: on the rigid flat every step is "
+             "taken per wavenumber on one mesh column's banded system, docs/stick-phase.md; with a substrate "
+             "or `output.energy_decomposition = hht`, after the stick phase, one K_eff pass per step) or "
+             "`cholmod` (general sparse Cholesky, two solves per step, every step: the oracle); both give the "
+             "same discrete solution to round-off, which this chaotic problem amplifies after slip onset",
              [](auto& c) -> auto& { return c.numerics.linear_solver; },
              {{"circulant", "the two-solve FFT path is retired; `spectral` solves the same equations with one "
                             "K_eff pass per step (use \"spectral\" or leave the key out)"}}),

@@ -19,13 +19,22 @@ Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs)
 }
 
 Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_contact_nodes) {
-  const int n = n_contact_nodes;
-  Eigen::MatrixXd W(2 * n, 2 * n);
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(K_eff.size()), z(K_eff.size());
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(K_eff.size()), z[2];
   for (int b = 0; b < 2; ++b) {
     e(b) = 1;
-    K_eff.solve_into(e, z);
+    z[b].resize(K_eff.size());
+    K_eff.solve_into(e, z[b]);
     e(b) = 0;
+  }
+  return delassus_from_node_responses(z[0], z[1], n_contact_nodes);
+}
+
+Eigen::MatrixXd delassus_from_node_responses(const Eigen::VectorXd& z0, const Eigen::VectorXd& z1,
+                                             int n_contact_nodes) {
+  const int n = n_contact_nodes;
+  Eigen::MatrixXd W(2 * n, 2 * n);
+  for (int b = 0; b < 2; ++b) {
+    const Eigen::VectorXd& z = b == 0 ? z0 : z1;
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < n; ++k)
         for (int a = 0; a < 2; ++a) W(2 * i + a, 2 * k + b) = z(2 * (((i - k) % n + n) % n) + a);

@@ -19,6 +19,10 @@ Eigen::MatrixXd delassus_operator(const LinearSolver& K_eff, int n_contact_dofs)
 /// Equal to delassus_operator() to round-off (tested).
 Eigen::MatrixXd delassus_operator_periodic(const LinearSolver& K_eff, int n_contact_nodes);
 
+/// The same W from the two responses it is made of: z_b (at least 2 n entries, the contact DOFs first) the
+/// displacement under a unit load on DOF b of contact node 0; filled by the shift and symmetrized.
+Eigen::MatrixXd delassus_from_node_responses(const Eigen::VectorXd& z0, const Eigen::VectorXd& z1, int n_contact_nodes);
+
 /// The two columns of node 0 of a block-circulant W (as delassus_operator_periodic makes it, symmetrized
 /// and still exactly block-circulant), stacked twice: a 4n x 2 matrix C with
 ///     W(:, 2k + b) = C.col(b).segment(2 ((n - k) mod n), 2n),

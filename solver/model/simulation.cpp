@@ -121,12 +121,12 @@ std::int64_t step_count(const DerivedConstants& d) {
 }
 
 /// State at t = 0 of the dynamic stage, before the seed: the preload, the top moving at V0, the acceleration
-/// consistent with the preload reactions, the running sums at zero.
-LoopState start_state(const LayerModel& m, const PreloadState& pre, const HHTStepper& stepper,
-                      const FrictionLaw& friction, const EnergyLedger& ledger, const LinearSolver& M_ff) {
+/// consistent with the preload reactions (`dynamics`), the running sums at zero.
+LoopState start_state(const LayerModel& m, const PreloadState& pre, HHTState dynamics, const FrictionLaw& friction,
+                      const EnergyLedger& ledger) {
   LoopState loop;
   loop.t_end = m.config.time.t_end;
-  loop.dynamics = stepper.initial_state(pre.u, start_velocity(m), pre.r, M_ff);
+  loop.dynamics = std::move(dynamics);
   loop.contact = pre.state;
   loop.friction = friction.initial_state(pre.r);
   loop.energy = ledger.start(loop.dynamics);
@@ -216,19 +216,25 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   // 1. Preload: quasi-static compression, then shear until T/N = preshear_ratio f (stages 1 and 2).
   const PreloadState pre = solve_preload(m);
 
-  // 2. Effective matrix K_eff, factorized once, and the Delassus operator W = w C K_eff^-1 C^T.
+  // 2. For a run that steps plainly (model/stick_phase/slip_phase_run.hpp says which do not): the effective
+  //    matrix K_eff, factorized once, and the Delassus operator W = w C K_eff^-1 C^T.
   const HHTCoefficients hht(c.time.hht_alpha, m.d.dt);
   const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
-  HHTStepper stepper(system, hht, c.time.contact_weighting == ContactWeighting::alpha,
-                     m.factorize_split(effective_matrix(hht, system)));
-  // With a substrate: its own stepper, and the pair's operator W_L + S W_S S (model/substrate.hpp).
+  const bool slip_phase = slip_phase_applies(m);
+  std::unique_ptr<HHTStepper> stepper;
   std::unique_ptr<SubstrateBody> sub;
-  if (m.substrate)
-    sub = std::make_unique<SubstrateBody>(*m.substrate, hht, c.time.contact_weighting == ContactWeighting::alpha);
-  const Eigen::MatrixXd W =
-      sub ? pair_delassus(stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2),
-                          sub->delassus())
-          : stepper.contact_weight() * delassus_operator_periodic(stepper.K_eff(), n_c / 2);
+  Eigen::MatrixXd W;
+  if (!slip_phase) {
+    const bool alpha_weighted = c.time.contact_weighting == ContactWeighting::alpha;
+    stepper =
+        std::make_unique<HHTStepper>(system, hht, alpha_weighted, m.factorize_split(effective_matrix(hht, system)));
+    W = stepper->contact_weight() * delassus_operator_periodic(stepper->K_eff(), n_c / 2);
+    // With a substrate: its own stepper, and the pair's operator W_L + S W_S S (model/substrate.hpp).
+    if (m.substrate) {
+      sub = std::make_unique<SubstrateBody>(*m.substrate, hht, alpha_weighted);
+      W = pair_delassus(W, sub->delassus());
+    }
+  }
   const auto friction = make_friction_law(c.friction);
   const GaussSeidelSettings settings{c.contact.tolerance, c.contact.max_iterations, m.d.p0 * m.d.h};
 
@@ -236,7 +242,10 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   //    its checkpoint (whose rows are already in the output).
   const auto M_ff = m.factorize(m.M_ff);
   const EnergyLedger ledger(m, start_velocity(m).tail(m.n_top));
-  LoopState loop = start_state(m, pre, stepper, *friction, ledger, *M_ff);
+  LoopState loop = start_state(m, pre,
+                               stepper ? stepper->initial_state(pre.u, start_velocity(m), pre.r, *M_ff)
+                                       : hht_initial_state(system, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
+                               *friction, ledger);
   add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);
   if (sub) {
@@ -263,7 +272,6 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     recorder.record_start(loop, pre.contact_iterations);
     if (observer) observer->after_step(recorder.rows(), capture);
   }
-  const bool slip_phase = slip_phase_applies(m);
   const bool resumed_in_slip_phase = slip_phase && resumed && WavenumberSlipStep::saved_in(*resumed);
   watch.lap(&StepProfile::setup);
   ProgressPacer pacer(progress);
@@ -286,7 +294,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   // 5. The slip phase in wavenumbers, to the end of the run (model/stick_phase/slip_phase_run.hpp); made after
   //    the stick phase has freed its lanes, so that the two never hold memory at once.
   if (slip_phase) {
-    slip = std::make_unique<WavenumberSlipStep>(m, pre.u_x_top, W, settings, *friction);
+    slip = std::make_unique<WavenumberSlipStep>(m, pre.u_x_top, settings, *friction);
     if (resumed_in_slip_phase)
       slip->restore(loop, *resumed);
     else
@@ -297,60 +305,63 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   // 6. Plain time loop (the substrate pair, the HHT terms of the ledger; and every run of a model stepped
   //    plainly), up to the first step at or after t_end (which stop_after_opening may shorten).
-  HHTState& s = loop.dynamics;
-  ContactStep contact(n_c, W, settings);
-  // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
-  const auto top_after = [&](std::int64_t step) {
-    return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
-  };
-  Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
-  while (failure.empty() && before_end(loop.step, n_steps_max, loop, hht.dt)) {
-    if (stop_requested && stop_requested->load()) {
-      failure = "interrupted";
-      break;
+  if (stepper) {
+    HHTStepper& plain = *stepper;
+    HHTState& s = loop.dynamics;
+    ContactStep contact(n_c, W, settings);
+    // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
+    const auto top_after = [&](std::int64_t step) {
+      return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
+    };
+    Eigen::VectorXd u_d_next = top_after(loop.step + 1), u_d_following;
+    while (failure.empty() && before_end(loop.step, n_steps_max, loop, hht.dt)) {
+      if (stop_requested && stop_requested->load()) {
+        failure = "interrupted";
+        break;
+      }
+      const double t = (loop.step + 1) * hht.dt;
+      // 6a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
+      plain.predict(s, u_d_next);
+      watch.lap(&StepProfile::predictor);
+      const Eigen::VectorXd& u_free = plain.solve_free();
+      const Eigen::VectorXd* u_free_substrate = nullptr;
+      if (sub) {
+        sub->stepper.predict(loop.substrate, sub->u_bottom);
+        u_free_substrate = &sub->stepper.solve_free();
+      }
+      watch.lap(&StepProfile::free_solve);
+      // 6b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
+      const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
+      if (!report.converged) {
+        failure = "contact_not_converged";
+        break;
+      }
+      watch.lap(&StepProfile::contact);
+      // 6c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
+      u_d_following = top_after(loop.step + 2);
+      plain.correct(contact.r_next, s, &u_d_following);
+      if (sub) sub->stepper.correct(sub->load(contact.r_next), loop.substrate, &sub->u_bottom);
+      u_d_next.swap(u_d_following);
+      watch.lap(&StepProfile::correction);
+      // 6d. Energy ledger, friction memory, output rows, first opening.
+      ++loop.step;
+      contact.du = s.u.head(n_c) - plain.u_previous().head(n_c);
+      ledger.book_step(s, plain.u_previous(), plain.r_previous(), contact.du, loop.energy);
+      if (sub) {  // each body books its own contact work; the friction law sees the relative increment
+        Eigen::VectorXd du_substrate = loop.substrate.u.head(n_c) - sub->stepper.u_previous().head(n_c);
+        sub->ledger.book_step(loop.substrate, sub->stepper.u_previous(), sub->stepper.r_previous(), du_substrate,
+                              loop.substrate_energy);
+        mirror_x_components(du_substrate);
+        contact.du += du_substrate;
+      }
+      friction->update(contact.du, s.r, hht.dt, loop.friction);
+      recorder.record_step(loop, plain.u_previous(), report, sub ? &sub->stepper.u_previous() : nullptr);
+      if (recorder.detect_first_opening(loop)) shorten_after_opening(c.time, t, loop);
+      watch.lap(&StepProfile::diagnostics);
+      watch.count(loop.step, report.iterations);
+      pacer.step_done(t, loop, recorder);
+      if (observer) observer->after_step(recorder.rows(), capture);
     }
-    const double t = (loop.step + 1) * hht.dt;
-    // 6a. Predictor and free solve (r(n+1) = 0), the top displaced to u_d(n+1).
-    stepper.predict(s, u_d_next);
-    watch.lap(&StepProfile::predictor);
-    const Eigen::VectorXd& u_free = stepper.solve_free();
-    const Eigen::VectorXd* u_free_substrate = nullptr;
-    if (sub) {
-      sub->stepper.predict(loop.substrate, sub->u_bottom);
-      u_free_substrate = &sub->stepper.solve_free();
-    }
-    watch.lap(&StepProfile::free_solve);
-    // 6b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
-    const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
-    if (!report.converged) {
-      failure = "contact_not_converged";
-      break;
-    }
-    watch.lap(&StepProfile::contact);
-    // 6c. Correction with r(n+1) and Newmark update, and with them the predictor of the next step.
-    u_d_following = top_after(loop.step + 2);
-    stepper.correct(contact.r_next, s, &u_d_following);
-    if (sub) sub->stepper.correct(sub->load(contact.r_next), loop.substrate, &sub->u_bottom);
-    u_d_next.swap(u_d_following);
-    watch.lap(&StepProfile::correction);
-    // 6d. Energy ledger, friction memory, output rows, first opening.
-    ++loop.step;
-    contact.du = s.u.head(n_c) - stepper.u_previous().head(n_c);
-    ledger.book_step(s, stepper.u_previous(), stepper.r_previous(), contact.du, loop.energy);
-    if (sub) {  // each body books its own contact work; the friction law sees the relative increment
-      Eigen::VectorXd du_substrate = loop.substrate.u.head(n_c) - sub->stepper.u_previous().head(n_c);
-      sub->ledger.book_step(loop.substrate, sub->stepper.u_previous(), sub->stepper.r_previous(), du_substrate,
-                            loop.substrate_energy);
-      mirror_x_components(du_substrate);
-      contact.du += du_substrate;
-    }
-    friction->update(contact.du, s.r, hht.dt, loop.friction);
-    recorder.record_step(loop, stepper.u_previous(), report, sub ? &sub->stepper.u_previous() : nullptr);
-    if (recorder.detect_first_opening(loop)) shorten_after_opening(c.time, t, loop);
-    watch.lap(&StepProfile::diagnostics);
-    watch.count(loop.step, report.iterations);
-    pacer.step_done(t, loop, recorder);
-    if (observer) observer->after_step(recorder.rows(), capture);
   }
   RunRecord record = recorder.finish(loop, failure.empty(), failure.empty() ? loop.end_reason : failure);
   if (observer) observer->at_end(record, capture);

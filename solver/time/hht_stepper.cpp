@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "linalg/vector_clones.hpp"
 
@@ -52,18 +53,25 @@ HHTStepper::HHTStepper(const PartitionedSystem& system, const HHTCoefficients& h
 
 HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
                                    const LinearSolver& M_ff) const {
-  const int n_f = system_.n_free, n_c = system_.n_contact;
+  Eigen::VectorXd Ku(u.size());
+  multiply_K(u, Ku);
+  return hht_initial_state(system_, u, v, r, std::move(Ku), M_ff);
+}
+
+HHTState hht_initial_state(const PartitionedSystem& system, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                           const Eigen::VectorXd& r, Eigen::VectorXd Ku, const LinearSolver& M_ff) {
+  const int n_f = system.n_free, n_c = system.n_contact;
   HHTState s;
   s.u = u;
   s.v = v;
   s.r = r;
-  multiply_K(u, s.Ku);
+  s.Ku = std::move(Ku);
   Eigen::VectorXd rhs = -s.Ku.head(n_f);
   rhs.head(n_c) += r;
   s.acc = Eigen::VectorXd::Zero(u.size());
   s.acc.head(n_f) = M_ff.solve(rhs);
-  s.Mu_f = system_.M_ff_rows * u.head(n_f);
-  s.Mv_f = system_.M_ff_rows * v.head(n_f);
+  s.Mu_f = system.M_ff_rows * u.head(n_f);
+  s.Mv_f = system.M_ff_rows * v.head(n_f);
   s.Ma_f = -s.Ku.head(n_f);
   s.Ma_f.head(n_c) += r;
   return s;

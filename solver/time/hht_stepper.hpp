@@ -59,6 +59,11 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const E
 /// The same, of the system's blocks.
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system);
 
+/// HHTStepper::initial_state with K u given (a run that never steps plainly has no stepper): the state in the
+/// equation of motion, the acceleration from M_ff a_f = C^T r - (K u)_f, the mass products.
+HHTState hht_initial_state(const PartitionedSystem& system, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                           const Eigen::VectorXd& r, Eigen::VectorXd Ku, const LinearSolver& M_ff);
+
 class HHTStepper {
  public:
   /// @param K_eff  split factorization of effective_matrix(hht, system) whose n_contact() is system.n_contact

@@ -64,7 +64,7 @@ TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
   EXPECT_TRUE(plain.state().contact == loop_end.contact);
 
   plain.start(start);
-  WavenumberSlipStep modes(m, record.u_x_preshear, plain.delassus(), plain.settings(), plain.friction());
+  WavenumberSlipStep modes(m, record.u_x_preshear, plain.settings(), plain.friction());
   modes.start(start);
   LoopState rebuilt = start;
   // The round-off model of the bound. Each way of stepping computes u(n+1) by backward-stable solves, so a
@@ -103,6 +103,26 @@ TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
   EXPECT_LT(worst_u, 1.0);
   EXPECT_LT(worst_v, 1.0);
   EXPECT_LT(worst_r, 1.0);
+}
+
+// The lanes' W (from their responses to a unit load on contact node 0) is the plain step's w C K_eff^-1 C^T
+// (from its K_eff factorization) to round-off, and block-circulant and symmetric as the contact solver needs.
+TEST(WavenumberSlipStep, ItsDelassusOperatorIsThePlainOne) {
+  for (const char* weighting : {"alpha", "end"}) {
+    const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 8}}},
+                                             {"time", {{"contact_weighting", weighting}}}}));
+    const PlainSlipStep plain(m, 0.0);
+    const WavenumberSlipStep modes(m, 0.0, plain.settings(), plain.friction());
+    const Eigen::MatrixXd &W = modes.delassus(), &W_plain = plain.delassus();
+    const double scale = W_plain.cwiseAbs().maxCoeff();
+    const double difference = (W - W_plain).cwiseAbs().maxCoeff() / scale;
+    std::printf("[W from the lanes vs from K_eff, %s weighting] %.2e of its largest entry\n", weighting, difference);
+    EXPECT_LT(difference, 1e-13);
+    EXPECT_TRUE(W == W.transpose());
+    const int n = m.mesh.n_contact();
+    for (int i = 0; i < n; ++i)  // block-circulant: block (i, k) depends on i - k only
+      EXPECT_TRUE(W.block(2 * i, 0, 2, 2) == W.block(2 * ((i + 1) % n), 2, 2, 2)) << i;
+  }
 }
 
 }  // namespace

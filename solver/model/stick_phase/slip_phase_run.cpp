@@ -25,7 +25,11 @@ std::string run_slip_phase(WavenumberSlipStep& slip, const LayerModel& m, std::i
   };
   const double dt = m.d.dt;
   std::string failure;
-  while (before_end(slip.step_count(), n_steps_max, loop, dt) && !hooks.stop_requested()) {
+  while (before_end(slip.step_count(), n_steps_max, loop, dt)) {
+    if (hooks.stop_requested()) {
+      failure = "interrupted";
+      break;
+    }
     slip.solve_free();
     hooks.lap(&StepProfile::free_solve);
     const GaussSeidelReport report = slip.solve_contact();

@@ -27,8 +27,8 @@ bool slip_phase_applies(const LayerModel& m);
 /// Runs the phase from the state `slip` holds (started from `loop`, or restored) to the end of the run, as
 /// simulate()'s loop would: steps stop before n_steps_max and before loop.t_end (which stop_after_opening
 /// may shorten), or when a stop is requested. On return `loop` is the full state after the last step (if
-/// the phase stepped or was restored; else as it was). Returns "" or why the run failed
-/// ("contact_not_converged").
+/// the phase stepped or was restored; else as it was). Returns "" or why the run stopped early
+/// ("contact_not_converged", "interrupted").
 std::string run_slip_phase(WavenumberSlipStep& slip, const LayerModel& m, std::int64_t n_steps_max, Recorder& recorder,
                            const PhaseHooks& hooks, LoopState& loop);
 

@@ -5,12 +5,13 @@
 #include <string>
 #include <utility>
 
+#include "contact/delassus.hpp"
 #include "linalg/vector_clones.hpp"
 
 namespace slidewave {
 
-WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, const Eigen::MatrixXd& W,
-                                       const GaussSeidelSettings& settings, const FrictionLaw& law)
+WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, const GaussSeidelSettings& settings,
+                                       const FrictionLaw& law)
     : layer_(layer),
       hht_(layer.config.time.hht_alpha, layer.d.dt),
       u_x_top_(u_x_top),
@@ -24,7 +25,6 @@ WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, 
       U_next_(blocks_.s, blocks_.lanes),
       KU_next_(blocks_.s, blocks_.lanes),
       R_next_(2, blocks_.lanes),
-      contact_(layer.n_contact_dofs, W, settings),
       ledger_(blocks_, hht_, layer.d.V0),
       u_free_contact_(layer.n_contact_dofs),
       u_contact_(layer.n_contact_dofs),
@@ -44,6 +44,25 @@ WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, 
     G.resize(unit.re.size());
     for (std::size_t e = 0; e < G.size(); ++e) G[e] = w_ * unit.re[e];
   }
+  // W = w C A_eff^-1 C^T from the same responses: a unit load on DOF b of contact node 0, transformed as the
+  // correction transforms r, gives the contact displacement the correction would add.
+  Eigen::VectorXd z[2];
+  for (int b = 0; b < 2; ++b) {
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(layer.n_contact_dofs);
+    load(b) = 1;
+    LaneVectors R(2, lanes), U(2, lanes);
+    transform_.forward(load.data(), R);
+    for (int r = 0; r < 2; ++r)
+      for (int m = 0; m < lanes; ++m) {
+        const std::size_t e = U.at(r, m);
+        U.re[e] = G0_[e] * R.re[R.at(0, m)] + G1_[e] * R.re[R.at(1, m)];
+        U.im[e] = G0_[e] * R.im[R.at(0, m)] + G1_[e] * R.im[R.at(1, m)];
+      }
+    z[b].resize(layer.n_contact_dofs);
+    transform_.inverse(U, 1, z[b].data());
+  }
+  W_ = delassus_from_node_responses(z[0], z[1], layer.mesh.n_contact());
+  contact_ = std::make_unique<SlipContact>(layer.n_contact_dofs, W_, settings);
 }
 
 Eigen::Vector2d WavenumberSlipStep::top_after(std::int64_t step) const {
@@ -211,8 +230,8 @@ void WavenumberSlipStep::solve_free() {
 }
 
 GaussSeidelReport WavenumberSlipStep::solve_contact() {
-  const GaussSeidelReport report = contact_.solve(u_free_contact_, u_contact_, r_, law_, friction_, contact_states_);
-  transform_.forward(contact_.r_next.data(), R_next_);
+  const GaussSeidelReport report = contact_->solve(u_free_contact_, u_contact_, r_, law_, friction_, contact_states_);
+  transform_.forward(contact_->r_next.data(), R_next_);
   return report;
 }
 
@@ -258,9 +277,9 @@ void WavenumberSlipStep::correct() {
   kinetic_ = ledger_.kinetic(v_M_v_.data(), lanes, x.V);
   elastic_ = ledger_.elastic(u_K_u_.data(), lanes, x.U, 0.0, u_top_next_);
   const Eigen::Vector2d F_top_next = ledger_.top_force(x, u_top_next_);
-  ledger_.book_work(F_top_, F_top_next, top_after(step_), u_top_next_, du_, r_, contact_.r_next, sums_);
+  ledger_.book_work(F_top_, F_top_next, top_after(step_), u_top_next_, du_, r_, contact_->r_next, sums_);
   F_top_ = F_top_next;
-  r_ = contact_.r_next;
+  r_ = contact_->r_next;
   law_.update(du_, r_, k.dt, friction_);
   u_contact_.swap(u_contact_next_);
   u_top_next_ = u_top_following;

@@ -6,7 +6,7 @@
 // by -i: real symmetric K_m, M_m; the mass products carried), and only the two contact rows cross over:
 //     free solve   A_eff,m U_free = b (M U~) - a K U(n) + a' [rows 0, 1] R(n) - [m = 0] (1-a) n_x K_fd0 u_top(n+1)
 //                  (band L D L^T of all s rows), u_free,c = inverse DFT of rows 0, 1;
-//     contact      r(n+1) by the loop's contact solve (model/stick_phase/slip_contact.hpp, the same W),
+//     contact      r(n+1) by the loop's contact solve (model/stick_phase/slip_contact.hpp; W from the lanes),
 //                  R(n+1) = its DFT (one mesh row);
 //     correction   U(n+1) = U_free + w (G_0 R_0 + G_1 R_1),  G_c = A_eff,m^-1 e_c (real per lane), the Newmark
 //                  update, K U by the band product (+ the top's share on lane 0), and the mass products,
@@ -19,6 +19,7 @@
 // so that a resumed run is the uninterrupted one bit for bit.
 #include <Eigen/Dense>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "contact/friction_law.hpp"
@@ -37,10 +38,13 @@ namespace slidewave {
 class WavenumberSlipStep {
  public:
   /// @param layer  the layer (must outlive this object); u_x_top: the preload's top shear displacement
-  /// @param W      the loop's Delassus operator (PlainSlipStep::delassus(); must outlive this object)
   /// @param law    the friction law (must outlive this object)
-  WavenumberSlipStep(const LayerModel& layer, double u_x_top, const Eigen::MatrixXd& W,
-                     const GaussSeidelSettings& settings, const FrictionLaw& law);
+  WavenumberSlipStep(const LayerModel& layer, double u_x_top, const GaussSeidelSettings& settings,
+                     const FrictionLaw& law);
+
+  /// The Delassus operator W = w C A_eff^-1 C^T of the contact solve, from the lanes' responses to a unit load
+  /// on a contact node (what plain stepping gets from its K_eff factorization: the same to round-off).
+  const Eigen::MatrixXd& delassus() const { return W_; }
 
   /// From the layer's real-space loop state (rigid flat): the DFT of u, v, a, K u, the mass products, r; the
   /// energy sums as they are.
@@ -94,7 +98,8 @@ class WavenumberSlipStep {
   std::vector<double> G0_, G1_;            ///< w A_eff,m^-1 e_0, w A_eff,m^-1 e_1 (row r, lane m at r lanes + m)
   ModeState state_;                        ///< time n (updated in place by correct(); no S: no HHT terms booked)
   LaneVectors U_next_, KU_next_, R_next_;  ///< the step's right-hand side -> U_free -> U(n+1); K U(n+1); R(n+1)
-  SlipContact contact_;
+  Eigen::MatrixXd W_;
+  std::unique_ptr<SlipContact> contact_;  ///< made once W_ is (it keeps W_ by reference)
   StickPhaseLedger ledger_;
   EnergySums sums_;
   Eigen::Vector2d F_top_;  ///< sum over the top nodes of (K u + M a)_top at the current step
