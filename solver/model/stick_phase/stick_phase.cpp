@@ -60,10 +60,18 @@ bool StickPhase::step(const FrictionBounds& bounds) {
   return true;
 }
 
-double StickPhase::kinetic() const { return ledger_.kinetic(stepper_.current(), stepper_.n_active()); }
+double StickPhase::kinetic() const {
+  const ModeState& x = stepper_.current();
+  const int n = stepper_.n_active();
+  return x.v_M_v.empty() ? ledger_.kinetic(x, n) : ledger_.kinetic(x.v_M_v.data(), n, x.V);
+}
 
 double StickPhase::elastic() const {
-  return ledger_.elastic(stepper_.current(), stepper_.n_active(), stepper_.retired_elastic(), top_after(step_));
+  const ModeState& x = stepper_.current();
+  const int n = stepper_.n_active();
+  const double retired = stepper_.retired_elastic();
+  return x.u_K_u.empty() ? ledger_.elastic(x, n, retired, top_after(step_))
+                         : ledger_.elastic(x.u_K_u.data(), n, x.U, retired, top_after(step_));
 }
 
 void StickPhase::reconstruct(LoopState& loop) const {

@@ -96,6 +96,8 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   const int s = blocks_.s, lanes = blocks_.lanes;
   ModeState& x = state_a_;
   transform_state(layer, transform, x);
+  x.v_M_v.clear();  // not made by a step
+  x.u_K_u.clear();
   track_shift_ = shift_f != nullptr;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
   state_b_ = state_a_;
@@ -179,6 +181,10 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e;
       for (int m = 0; m < me; ++m) R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
     }
+  y.v_M_v.assign(lanes, 0.0);
+  y.u_K_u.assign(lanes, 0.0);
+  double* __restrict v_M_v = y.v_M_v.data();
+  double* __restrict u_K_u = y.u_K_u.data();
   // The mass products: M a(n+1) of the interior rows from their equation of motion,
   // -(1-a) K u(n+1) - a K u(n) (K u with the top's share; the top has a = 0), of the contact rows the band
   // product the reactions came from; M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
@@ -201,6 +207,13 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
         const double Mu_tilde = Mu[m] + dt * Mv[m] + c2 * Ma[m];
         Mv_next[m] = Mv[m] + dt * (g_old * Ma[m] + g * Ma_next[m]);
         Mu_next[m] = Mu_tilde + beta_dt2 * Ma_next[m];
+      }
+      // The energies' forms while the row is in cache (the recorder reads them every step).
+      const double* v_next = (part ? y.V.im : y.V.re).data() + e;
+      const double* u_next = (part ? y.U.im : y.U.re).data() + e;
+      for (int m = 0; m < me; ++m) {
+        v_M_v[m] += v_next[m] * Mv_next[m];
+        u_K_u[m] += u_next[m] * Ku_next[m];
       }
     }
   if (!track_shift_) return;

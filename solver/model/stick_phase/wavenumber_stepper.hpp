@@ -13,6 +13,7 @@
 // reactions, the wavenumber is retired: set to U* and no longer stepped. Wavenumbers retire from the
 // highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1.
 #include <Eigen/Dense>
+#include <vector>
 
 #include "model/stick_phase/banded_lanes.hpp"
 #include "model/stick_phase/row_transform.hpp"
@@ -31,6 +32,9 @@ struct ModeState {
   LaneVectors MU, MV, MA;   ///< M u, M v, M a of the free rows (M of the free DOFs: the top has a = 0)
   LaneVectors S;            ///< the HHT shift term s (model/energy_ledger.hpp), if booked (else empty)
   LaneVectors R;            ///< contact reactions (2 rows)
+  /// Per lane, the energies' forms v.M v and u.K u summed over the rows (real then imaginary part of each row,
+  /// the order of StickPhaseLedger's sums), where the step that made the state accumulated them; else empty.
+  std::vector<double> v_M_v, u_K_u;
   ModeState(int s, int lanes, bool with_shift = true)
       : U(s, lanes),
         V(s, lanes),
