@@ -22,14 +22,16 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   const Matrix8 Ke = quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration);
   const Matrix8 Me = quad4_mass(c.material.rho, d.h, c.mesh.mass);
   const DofRange all{0, mesh.n_dofs()}, free{0, n_free}, top{n_free, mesh.n_dofs()};
-  K = assemble_uniform_rows(mesh, Ke, all, all);
-  M = assemble_uniform_rows(mesh, Me, all, all);
-  K_ff = assemble_uniform_columns(mesh, Ke, free, free);
-  M_ff = assemble_uniform_columns(mesh, Me, free, free);
-  M_ff_rows = assemble_uniform_rows(mesh, Me, free, free);
-  K_fd = assemble_uniform_rows(mesh, Ke, free, top);
-  M_fd = assemble_uniform_rows(mesh, Me, free, top);
-  M_top_rows = assemble_uniform_rows(mesh, Me, top, all);
+  // Swapped in: Eigen's SparseMatrix has no move assignment, and `K = assemble...(...)` would copy each
+  // matrix into fresh memory.
+  assemble_uniform_rows(mesh, Ke, all, all).swap(K);
+  assemble_uniform_rows(mesh, Me, all, all).swap(M);
+  assemble_uniform_columns(mesh, Ke, free, free).swap(K_ff);
+  assemble_uniform_columns(mesh, Me, free, free).swap(M_ff);
+  assemble_uniform_rows(mesh, Me, free, free).swap(M_ff_rows);
+  assemble_uniform_rows(mesh, Ke, free, top).swap(K_fd);
+  assemble_uniform_rows(mesh, Me, free, top).swap(M_fd);
+  assemble_uniform_rows(mesh, Me, top, all).swap(M_top_rows);
   if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
 }
 
