@@ -292,8 +292,9 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   }
 
   // 5. The slip phase in wavenumbers, to the end of the run (model/stick_phase/slip_phase_run.hpp); made after
-  //    the stick phase has freed its lanes, so that the two never hold memory at once.
-  if (slip_phase) {
+  //    the stick phase has freed its lanes, so that the two never hold memory at once (and not at all when the
+  //    run ends in the stick phase).
+  if (slip_phase && before_end(loop.step, n_steps_max, loop, hht.dt)) {
     slip = std::make_unique<WavenumberSlipStep>(m, pre.u_x_top, settings, *friction);
     if (resumed_in_slip_phase)
       slip->restore(loop, *resumed);
