@@ -1,6 +1,6 @@
 #pragma once
 // The options every benchmark takes for the meshes it times: `--n N...` (elements per H) and
-// `--lambda L...` (period / H), each followed by one or more values.
+// `--lambda L...` (period / H), each followed by one or more values; and those of the case it times.
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -23,6 +23,17 @@ inline bool mesh_option(const std::string& option, int argc, char** argv, int& i
   }
   return false;
 }
+
+/// The case options of the benchmarks that time the paper's case: `--t-end T`, `--nu NU`, `--f F`.
+struct CaseOptions {
+  double t_end = 1000, nu = 0.2, f = 1.5;
+  /// True when `option` is one of them (then set to `value`).
+  bool take(const std::string& option, double value) {
+    double* field = option == "--t-end" ? &t_end : option == "--nu" ? &nu : option == "--f" ? &f : nullptr;
+    if (field) *field = value;
+    return field != nullptr;
+  }
+};
 
 /// The paper's configuration at one mesh (n elements per H, period lambda_over_H H) with the benchmark's nu,
 /// f and t_end: the case every benchmark times.

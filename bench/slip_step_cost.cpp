@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "mesh_options.hpp"
-#include "thread_cpu_time.hpp"
 #include "model/layer_model.hpp"
 #include "model/simulation.hpp"
 #include "model/stick_phase/plain_slip_step.hpp"
 #include "model/stick_phase/wavenumber_slip_step.hpp"
+#include "thread_cpu_time.hpp"
 
 namespace {
 
@@ -82,7 +82,7 @@ Cost time_steps(Stepper& stepper, const slidewave::LoopState& start, int steps, 
 int main(int argc, char** argv) {
   std::vector<int> resolutions;
   std::vector<double> lambdas;
-  double t_end = 1000, nu = 0.2, f = 1.5;
+  slidewave::bench::CaseOptions case_options;
   int steps = 200, after = 5, repeats = 3;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
@@ -94,13 +94,8 @@ int main(int argc, char** argv) {
       return 2;
     }
     const double value = std::atof(argv[++i]);
-    if (option == "--t-end")
-      t_end = value;
-    else if (option == "--nu")
-      nu = value;
-    else if (option == "--f")
-      f = value;
-    else if (option == "--steps" && value >= 1)
+    if (case_options.take(option, value)) continue;
+    if (option == "--steps" && value >= 1)
       steps = static_cast<int>(value);
     else if (option == "--after" && value >= 0)
       after = static_cast<int>(value);
@@ -119,7 +114,8 @@ int main(int argc, char** argv) {
   std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
   for (const double lambda_over_H : lambdas)
     for (const int n : resolutions) {
-      slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
+      slidewave::RunConfig config =
+          slidewave::bench::bench_config(n, lambda_over_H, case_options.nu, case_options.f, case_options.t_end);
       config.output.progress = slidewave::ProgressMode::never;
       const slidewave::LayerModel model(config);  // the stick phase in wavenumbers gets there fast
       AfterFirstSlip observer(after);

@@ -92,7 +92,7 @@ double mean_ms(const std::vector<double>& s, std::size_t from, std::size_t to) {
 int main(int argc, char** argv) {
   std::vector<int> resolutions;
   std::vector<double> lambdas;
-  double t_end = 1000, nu = 0.2, f = 1.5;
+  slidewave::bench::CaseOptions case_options;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (slidewave::bench::mesh_option(option, argc, argv, i, resolutions, lambdas)) continue;
@@ -100,14 +100,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "usage: slidewave_bench_stick [--n N...] [--lambda L...] [--t-end T] [--nu NU] [--f F]\n");
       return 2;
     }
-    const double value = std::atof(argv[++i]);
-    if (option == "--t-end")
-      t_end = value;
-    else if (option == "--nu")
-      nu = value;
-    else if (option == "--f")
-      f = value;
-    else {
+    if (!case_options.take(option, std::atof(argv[++i]))) {
       std::fprintf(stderr, "unknown option %s\n", option.c_str());
       return 2;
     }
@@ -121,7 +114,8 @@ int main(int argc, char** argv) {
   std::printf("|---|---:|---:|---:|---:|---:|---:|---|---|---:|\n");
   for (const double lambda_over_H : lambdas)
     for (const int n : resolutions) {
-      slidewave::RunConfig config = slidewave::bench::bench_config(n, lambda_over_H, nu, f, t_end);
+      slidewave::RunConfig config =
+          slidewave::bench::bench_config(n, lambda_over_H, case_options.nu, case_options.f, case_options.t_end);
       config.output.progress = slidewave::ProgressMode::never;
       slidewave::LayerModel model(config);
       model.steps_in_wavenumbers = false;  // plain stepping, as before the stick phase was wired

@@ -5,6 +5,7 @@
 // all that the rows of /global and /interface read).
 #include <cstdint>
 #include <functional>
+#include <utility>
 
 #include "model/layer_model.hpp"
 #include "model/loop_state.hpp"
@@ -37,6 +38,23 @@ void shorten_after_opening(const TimeConfig& time, double t, LoopState& loop);
 /// The recorder's view of `loop`: its step, sums, recorder state, contact states, and of its dynamics the
 /// contact displacements (dynamics.u, n_contact_dofs entries) and reactions.
 LoopState contact_view(const LayerModel& m, const LoopState& loop);
+
+/// The full state of a phase that holds the dynamics itself: `loop` (t_end, end reason, ...) with the phase's
+/// reconstruct() and the recorder state `recording` (the view's).
+template <class Phase>
+LoopState full_state(const Phase& phase, const LoopState& loop, const RecorderState& recording) {
+  LoopState full = loop;
+  phase.reconstruct(full);
+  full.recording = recording;
+  return full;
+}
+
+/// At the end of a phase: `loop` becomes its full state (as full_state()).
+template <class Phase>
+void take_full_state(const Phase& phase, RecorderState recording, LoopState& loop) {
+  phase.reconstruct(loop);
+  loop.recording = std::move(recording);
+}
 
 /// The running sums a row reads (the energies booked so far; not F_top or the HHT vectors).
 void copy_running_sums(const EnergySums& from, EnergySums& to);

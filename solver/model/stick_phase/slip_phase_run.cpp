@@ -12,14 +12,9 @@ std::string run_slip_phase(WavenumberSlipStep& slip, const LayerModel& m, std::i
                            const PhaseHooks& hooks, LoopState& loop) {
   LoopState view = contact_view(m, loop);
   Eigen::VectorXd u_contact_previous = view.dynamics.u;
-  const auto full_state = [&] {
-    LoopState full = loop;
-    slip.reconstruct(full);
-    full.recording = view.recording;
-    return full;
-  };
+  const auto full = [&] { return full_state(slip, loop, view.recording); };
   const RunObserver::Capture capture = [&] {
-    StateArrays arrays = to_arrays(full_state());
+    StateArrays arrays = to_arrays(full());
     slip.save(arrays);
     return arrays;
   };
@@ -46,16 +41,12 @@ std::string run_slip_phase(WavenumberSlipStep& slip, const LayerModel& m, std::i
     copy_running_sums(slip.sums(), view.energy);
     u_contact_previous.swap(view.dynamics.u);
     view.dynamics.u = slip.contact_displacement();
-    recorder.record_wavenumber_step(view, slip.kinetic(), slip.elastic(), u_contact_previous, report, full_state);
+    recorder.record_wavenumber_step(view, slip.kinetic(), slip.elastic(), u_contact_previous, report, full);
     if (recorder.detect_first_opening(view)) shorten_after_opening(m.config.time, view.step * dt, loop);
     hooks.lap(&StepProfile::diagnostics);
     hooks.after_step(view, report.iterations, capture);
   }
-  if (slip.owns_state()) {
-    const RecorderState recording = view.recording;
-    slip.reconstruct(loop);
-    loop.recording = recording;
-  }
+  if (slip.owns_state()) take_full_state(slip, view.recording, loop);
   return failure;
 }
 

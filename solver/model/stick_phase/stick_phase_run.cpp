@@ -37,13 +37,8 @@ void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& fri
   // The recorder reads the contact part of the state only: the view carries that.
   LoopState view = contact_view(m, loop);
   Eigen::VectorXd u_contact_previous = view.dynamics.u;
-  const auto full_state = [&] {
-    LoopState full = loop;
-    stick.reconstruct(full);
-    full.recording = view.recording;
-    return full;
-  };
-  const RunObserver::Capture capture = [&] { return to_arrays(full_state()); };
+  const auto full = [&] { return full_state(stick, loop, view.recording); };
+  const RunObserver::Capture capture = [&] { return to_arrays(full()); };
   const double dt = m.d.dt;
   while (before_end(stick.step_count(), n_steps_max, loop, dt) && !hooks.stop_requested()) {
     if (!stick.step(*bounds)) break;
@@ -53,12 +48,10 @@ void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& fri
     u_contact_previous.swap(view.dynamics.u);
     view.dynamics.u = stick.contact_displacement();
     recorder.record_wavenumber_step(view, stick.kinetic(), stick.elastic(), u_contact_previous,
-                                    GaussSeidelReport{0, 0.0, true}, full_state);
+                                    GaussSeidelReport{0, 0.0, true}, full);
     hooks.after_step(view, 0, capture);
   }
-  const RecorderState recording = view.recording;
-  stick.reconstruct(loop);
-  loop.recording = recording;
+  take_full_state(stick, view.recording, loop);
 }
 
 }  // namespace slidewave
