@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,7 @@
 #include "contact/contact_solver.hpp"
 #include "contact/delassus.hpp"
 #include "contact/friction_law.hpp"
+#include "model/contact_step.hpp"
 #include "model/energy_ledger.hpp"
 #include "model/loop_state.hpp"
 #include "model/loop_state_arrays.hpp"
@@ -177,34 +179,6 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
   }
 }
 
-/// The contact problem of a step and its buffers: y = (du_x, u_y) = q + W r(n+1) at the contact nodes,
-/// q = C u_free - (u_x(n), 0), under the local law with the friction law's bounds; warm start r(n).
-/// A step that follows an all-stick step first tries the exact all-stick solution (contact/all_stick.hpp;
-/// reported as 0 sweeps), and Gauss–Seidel only if a node would not stick.
-struct ContactStep {
-  ContactStep(int n_c, const Eigen::MatrixXd& W, const GaussSeidelSettings& settings)
-      : q(n_c), r_next(n_c), du(n_c), solver(W, settings, DelassusLayout::block_circulant) {}
-  /// @param u_free_substrate  null (rigid flat), or the substrate's free contact displacement (its frame):
-  ///                           then q = q_L + S q_S (model/substrate.hpp)
-  GaussSeidelReport solve(const Eigen::VectorXd& u_free, const Eigen::VectorXd* u_free_substrate,
-                          const FrictionLaw& law, LoopState& loop) {
-    q = u_free.head(q.size());
-    for (Eigen::Index k = 0; k < q.size() / 2; ++k) q(2 * k) -= loop.dynamics.u(2 * k);
-    if (u_free_substrate)
-      for (Eigen::Index k = 0; k < q.size() / 2; ++k) {
-        q(2 * k) -= (*u_free_substrate)(2 * k) - loop.substrate.u(2 * k);
-        q(2 * k + 1) += (*u_free_substrate)(2 * k + 1);
-      }
-    const std::unique_ptr<FrictionBounds> bounds = law.bounds(loop.friction);
-    r_next = loop.dynamics.r;
-    if (all_stuck(loop.contact) && solver.solve_all_stick(q, *bounds, r_next, loop.contact))
-      return GaussSeidelReport{0, 0.0, true};
-    return solver.solve(q, *bounds, r_next, loop.contact);
-  }
-  Eigen::VectorXd q, r_next, du;  ///< du: contact displacement increment of the step
-  ContactSolver solver;
-};
-
 }  // namespace
 
 RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const std::atomic<bool>* stop_requested,
@@ -310,6 +284,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
     HHTStepper& plain = *stepper;
     HHTState& s = loop.dynamics;
     ContactStep contact(n_c, W, settings);
+    Eigen::VectorXd du(n_c);  // contact displacement increment of the step
     // The top's prescribed displacement after `step` steps: u_x(preload) + V0 t, the preload's u_y.
     const auto top_after = [&](std::int64_t step) {
       return m.top_displacement(pre.u_x_top + m.d.V0 * (step * hht.dt), c.loading.Uy_over_H * m.d.H);
@@ -325,14 +300,15 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       plain.predict(s, u_d_next);
       watch.lap(&StepProfile::predictor);
       const Eigen::VectorXd& u_free = plain.solve_free();
-      const Eigen::VectorXd* u_free_substrate = nullptr;
+      std::optional<SubstrateContact> substrate;
       if (sub) {
         sub->stepper.predict(loop.substrate, sub->u_bottom);
-        u_free_substrate = &sub->stepper.solve_free();
+        substrate.emplace(SubstrateContact{sub->stepper.solve_free(), loop.substrate.u});
       }
       watch.lap(&StepProfile::free_solve);
       // 6b. Contact forces r(n+1): Signorini–Coulomb at every node (pair), bounds from the friction law.
-      const GaussSeidelReport report = contact.solve(u_free, u_free_substrate, *friction, loop);
+      const GaussSeidelReport report =
+          contact.solve(u_free, s.u, s.r, *friction, loop.friction, loop.contact, substrate ? &*substrate : nullptr);
       if (!report.converged) {
         failure = "contact_not_converged";
         break;
@@ -346,16 +322,16 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
       watch.lap(&StepProfile::correction);
       // 6d. Energy ledger, friction memory, output rows, first opening.
       ++loop.step;
-      contact.du = s.u.head(n_c) - plain.u_previous().head(n_c);
-      ledger.book_step(s, plain.u_previous(), plain.r_previous(), contact.du, loop.energy);
+      du = s.u.head(n_c) - plain.u_previous().head(n_c);
+      ledger.book_step(s, plain.u_previous(), plain.r_previous(), du, loop.energy);
       if (sub) {  // each body books its own contact work; the friction law sees the relative increment
         Eigen::VectorXd du_substrate = loop.substrate.u.head(n_c) - sub->stepper.u_previous().head(n_c);
         sub->ledger.book_step(loop.substrate, sub->stepper.u_previous(), sub->stepper.r_previous(), du_substrate,
                               loop.substrate_energy);
         mirror_x_components(du_substrate);
-        contact.du += du_substrate;
+        du += du_substrate;
       }
-      friction->update(contact.du, s.r, hht.dt, loop.friction);
+      friction->update(du, s.r, hht.dt, loop.friction);
       recorder.record_step(loop, plain.u_previous(), report, sub ? &sub->stepper.u_previous() : nullptr);
       if (recorder.detect_first_opening(loop)) shorten_after_opening(c.time, t, loop);
       watch.lap(&StepProfile::diagnostics);

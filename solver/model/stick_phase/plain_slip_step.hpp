@@ -10,10 +10,10 @@
 #include <memory>
 
 #include "contact/friction_law.hpp"
+#include "model/contact_step.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state.hpp"
 #include "model/run_observer.hpp"
-#include "model/stick_phase/slip_contact.hpp"
 #include "time/hht_stepper.hpp"
 
 namespace slidewave {
@@ -53,7 +53,7 @@ class PlainSlipStep {
   Eigen::MatrixXd W_;
   GaussSeidelSettings settings_;
   std::unique_ptr<FrictionLaw> friction_;
-  SlipContact contact_;
+  ContactStep contact_;
   LoopState loop_;
   const Eigen::VectorXd* u_free_ = nullptr;
   Eigen::VectorXd u_d_next_, u_d_following_, du_;

@@ -62,7 +62,7 @@ WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, 
     transform_.inverse(U, 1, z[b].data());
   }
   W_ = delassus_from_node_responses(z[0], z[1], layer.mesh.n_contact());
-  contact_ = std::make_unique<SlipContact>(layer.n_contact_dofs, W_, settings);
+  contact_ = std::make_unique<ContactStep>(layer.n_contact_dofs, W_, settings);
 }
 
 Eigen::Vector2d WavenumberSlipStep::top_after(std::int64_t step) const {

@@ -6,7 +6,7 @@
 // by -i: real symmetric K_m, M_m; the mass products carried), and only the two contact rows cross over:
 //     free solve   A_eff,m U_free = b (M U~) - a K U(n) + a' [rows 0, 1] R(n) - [m = 0] (1-a) n_x K_fd0 u_top(n+1)
 //                  (band L D L^T of all s rows), u_free,c = inverse DFT of rows 0, 1;
-//     contact      r(n+1) by the loop's contact solve (model/stick_phase/slip_contact.hpp; W from the lanes),
+//     contact      r(n+1) by the loop's contact solve (model/contact_step.hpp; W from the lanes),
 //                  R(n+1) = its DFT (one mesh row);
 //     correction   U(n+1) = U_free + w (G_0 R_0 + G_1 R_1),  G_c = A_eff,m^-1 e_c (real per lane), the Newmark
 //                  update, K U by the band product (+ the top's share on lane 0), and the mass products,
@@ -23,12 +23,12 @@
 #include <vector>
 
 #include "contact/friction_law.hpp"
+#include "model/contact_step.hpp"
 #include "model/layer_model.hpp"
 #include "model/loop_state.hpp"
 #include "model/run_observer.hpp"
 #include "model/stick_phase/banded_lanes.hpp"
 #include "model/stick_phase/row_transform.hpp"
-#include "model/stick_phase/slip_contact.hpp"
 #include "model/stick_phase/stick_phase_ledger.hpp"
 #include "model/stick_phase/wavenumber_blocks.hpp"
 #include "model/stick_phase/wavenumber_stepper.hpp"
@@ -99,7 +99,7 @@ class WavenumberSlipStep {
   ModeState state_;                        ///< time n (updated in place by correct(); no S: no HHT terms booked)
   LaneVectors U_next_, KU_next_, R_next_;  ///< the step's right-hand side -> U_free -> U(n+1); K U(n+1); R(n+1)
   Eigen::MatrixXd W_;
-  std::unique_ptr<SlipContact> contact_;  ///< made once W_ is (it keeps W_ by reference)
+  std::unique_ptr<ContactStep> contact_;  ///< made once W_ is (it keeps W_ by reference)
   StickPhaseLedger ledger_;
   EnergySums sums_;
   Eigen::Vector2d F_top_;  ///< sum over the top nodes of (K u + M a)_top at the current step
