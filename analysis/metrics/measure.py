@@ -30,7 +30,7 @@ from analysis.theory import elastic, flutter
 
 #: Version of the measurement definitions, written into every metrics file (analysis/README.md
 #: says what each version changed).
-ANALYSIS_VERSION = "7"
+ANALYSIS_VERSION = "8"
 
 
 def _fronts_at(tracks: list[EdgeTrack], time: float) -> np.ndarray:
@@ -241,7 +241,7 @@ def _dissipation(m: Measured) -> dict[str, Any]:
 
 
 @family("energy and contact", ("energy_balance_error", "energy_balance_residual_max", "contact_residual_max",
-                               "contact_iterations_max"))
+                               "contact_iterations_max", "energy_created"))
 def _energy(m: Measured) -> dict[str, Any]:
     series = m.run.global_series
     error, residual_max = energy.energy_balance_error(
@@ -249,7 +249,8 @@ def _energy(m: Measured) -> dict[str, Any]:
         series.energy_balance_residual)
     return {"energy_balance_error": error, "energy_balance_residual_max": residual_max,
             "contact_residual_max": float(np.max(series.contact_residual)),
-            "contact_iterations_max": int(np.max(series.contact_iterations))}
+            "contact_iterations_max": int(np.max(series.contact_iterations)),
+            "energy_created": m.energy_created}
 
 
 @family("first drop complete", ("first_drop_complete",))

@@ -17,7 +17,7 @@ from analysis.fronts import celerity as cel
 from analysis.fronts import rules
 from analysis.fronts.sampling_limit import BEYOND_SAMPLING_LIMIT, within_sampling_limit
 from analysis.fronts.tracking import FrontMap, find_edges
-from analysis.metrics import inversion, opening, pulses, validity
+from analysis.metrics import energy, inversion, opening, pulses, validity
 
 #: Run parameters copied into the metrics: key -> (config group, config key).
 PARAMETERS = {
@@ -126,6 +126,7 @@ class Measured:
     drops: list[inversion.FrictionalDrop]
     min_ratio: float
     t_min_ratio: float
+    energy_created: float  # energy.energy_created of the measured part of the run
     non_physical_reason: str | None
 
     @property
@@ -205,10 +206,12 @@ def measure(run: RunData, settings: Settings) -> Measured:
     min_ratio, t_min_ratio = inversion.minimum_ratio(series.t, ratio)
     drops = (inversion.frictional_drops(series.t, ratio, settings.drop_rel * f, smooth_time=2 * H / c_s)
              if f > 0 else [])
+    created = energy.energy_created(series.energy_kinetic, series.energy_elastic, series.work_external,
+                                    series.dissipation_friction)
     return Measured(run=run, settings=settings, parameters=parameters,
                     sampled=validity.sampling(t, H, c_s), onset_time=onset_time, threshold=threshold,
                     window_length=window_length, major_duration=major_duration, front_map=front_map,
                     localization=localization, opened=opened, by_rule=by_rule,
                     high_threshold=high_threshold, count_all=count_all, spacing_all=spacing_all,
-                    drops=drops, min_ratio=min_ratio, t_min_ratio=t_min_ratio,
-                    non_physical_reason=validity.non_physical_reason(run, opened.max_opening))
+                    drops=drops, min_ratio=min_ratio, t_min_ratio=t_min_ratio, energy_created=created,
+                    non_physical_reason=validity.non_physical_reason(run, opened.max_opening, created))

@@ -104,6 +104,26 @@ def test_a_run_that_blew_up_to_infinity_is_non_physical(tmp_path):
     assert metrics["non_physical_reason"] == "non_finite: /interface/opening"
 
 
+def test_a_run_that_created_energy_is_non_physical(tmp_path):
+    # The top does 1 J/m of work; the layer ends up holding 3 J/m more than at the start: 2 J/m from nowhere.
+    run = tmp_path / "run.h5"
+    write_run(run, paper_case())
+    with h5py.File(run, "a") as file:
+        t = file["/global/t"][()]
+        share = (t - t[0]) / (t[-1] - t[0])
+        file["/global/work_external"][:] = share
+        file["/global/energy_kinetic"][:] = 3.0 * share**2
+        file["/global/energy_elastic"][:] = 5.0
+        file["/global/dissipation_friction"][:] = 0.0
+    out = tmp_path / "m.json"
+    code, _, err = analysis("measure", run, "-o", out)
+    assert code == 0, err
+    metrics = json.loads(out.read_text())
+    assert metrics["energy_created"] == pytest.approx(2.0 / 3.0, rel=1e-3)
+    assert metrics["category"] == "non_physical" and metrics["non_physical"] is True
+    assert metrics["non_physical_reason"].startswith("energy_created:")
+
+
 def test_a_coarse_interface_stride_is_not_reported_as_no_slip(tmp_path):
     # The paper case opens; written every 200 steps (155 s, a third of a round trip per frame).
     code, metrics, err, _ = measured(tmp_path, paper_case(interface_stride=200))

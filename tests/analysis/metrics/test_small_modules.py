@@ -101,6 +101,18 @@ def test_energy_balance_error():
     assert math.isnan(energy.energy_balance_error(zero, zero + 3.0, zero, zero, zero)[0])
 
 
+def test_energy_created_is_what_the_layer_holds_beyond_its_start_and_the_work_done_on_it():
+    t = np.linspace(0.0, 100.0, 101)
+    work = 2.0 * t
+    # Dissipative: E_kin + E_el grows by 1.6 t of the 2 t put in, so nothing is created.
+    assert energy.energy_created(0.1 * t, 50.0 + 1.5 * t, work, 0.4 * t) == 0.0
+    # A step at t = 60 holds 30 J/m more than the start and the work: 30 of the 200 J/m that flowed.
+    kinetic = 0.1 * t + np.where(t >= 60.0, 30.0 + 0.4 * t, 0.0)
+    assert energy.energy_created(kinetic, 50.0 + 1.5 * t, work, 0.4 * t) == pytest.approx(30.0 / 200.0, rel=1e-12)
+    zero = np.zeros(5)
+    assert math.isnan(energy.energy_created(zero, zero + 3.0, zero, zero))
+
+
 def test_drops_are_found_on_the_smoothed_series():
     t = np.arange(0.0, 1000.0, 0.5)
     # As in a run: T/N rises from 0.95 f to f, holds, drops; the solver's step-to-step chatter on top.
