@@ -42,10 +42,11 @@ def main(argv=None):
         hi = np.array([r["max"] for r in members])
         ax.errorbar(dt[has], mean[has], yerr=[mean[has] - lo[has], hi[has] - mean[has]], color="tab:orange",
                     marker="o", ms=4, capsize=3, label="ours: seed mean, range")
-        for r in members:
-            if r["n_backward"] < r["n_runs"]:
-                ax.annotate(f"{r['n_backward']:g}/{r['n_runs']:g}", (r["dt_times_cs"], ax.get_ylim()[0]),
-                            fontsize=6, ha="center", va="bottom")
+        for r in members:  # where not every run has a backward front; runs that left the model apart
+            non_physical = r.get("n_non_physical") or 0
+            if r["n_backward"] < r["n_runs"] or non_physical:
+                label = f"{r['n_backward']:g}/{r['n_runs']:g}" + (f"\n{non_physical:g} n.-p." if non_physical else "")
+                ax.annotate(label, (r["dt_times_cs"], ax.get_ylim()[0]), fontsize=6, ha="center", va="bottom")
         ax.axhline(members[0]["theory"], color="k", lw=1.0, label="Adams' steady wave")
         ax.axhline(members[0]["published"], color="k", ls="--", lw=1.0, label="published")
         ax.set_xscale("log", base=2)

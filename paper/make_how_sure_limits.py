@@ -26,7 +26,7 @@ SET_STEMS = ("One", "Two", "Three")
 MESH_STATUS = {"limit": "Limit", "not monotone": "NotMonotone", "not converging": "NotConverging",
                "incomplete": "Incomplete", "fewer meshes": "FewerMeshes"}
 DT_STATUS = {"within seed spread": "WithinSpread", "converging": "Converging", "not converging": "NotConverging",
-             "another regime": "OtherRegime", "too few time steps": "TooFew"}
+             "another regime": "OtherRegime", "left the model": "LeftModel", "too few time steps": "TooFew"}
 
 
 

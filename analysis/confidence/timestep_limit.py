@@ -6,7 +6,9 @@ reads ``all_metrics.csv`` tables (sweeps ``timestep_backward`` and ``timestep``;
 two tables, same nu, f, mesh, dt c_s and seed, is counted once, from the first) and keeps the runs
 of the cells published with a backward (negative) celerity. Per cell and dt c_s: the runs, those
 with a backward front, and over those the celerity's mean, min and max (the seed spread); the
-theory's value -c of Adams' steady supersonic slip wave (`analysis.theory.supersonic`). Writes, together or
+theory's value -c of Adams' steady supersonic slip wave (`analysis.theory.supersonic`). A run that left the
+model (`non_physical`: it created energy or opened beyond H, `analysis/metrics/validity.py`) is no sample of
+the celerity: it is counted apart (`n_non_physical`), not among the runs. Writes, together or
 not at all, ``timestep_limit.csv`` (one row per cell and dt), ``timestep_cells.csv`` (one per cell),
 ``timestep_limit.md``, ``.tex`` and ``timestep_limit_summary.json``.
 
@@ -15,6 +17,9 @@ The rule for a limit (docs/supersonic-backward.md, section 6; fixed before any r
 seed means m1, m2, m3 (largest dt first), the differences d_prev = m2 - m1, d_last = m3 - m2, and the
 seed range S = max - min at the smallest dt:
 
+- *left the model*: at one of those dt every run is `non_physical` (added with analysis version 8, when
+  the runs at dt c_s = 0.0625 m were found to create energy: docs/physics-notes.md, section 8): the
+  method cannot go to that dt, and nothing is said about a limit;
 - *another regime*: at one of those dt fewer than half of the runs have a backward front;
 - *within seed spread*: |d_prev| <= S and |d_last| <= S: halving dt moves the mean by no more than
   the seeds scatter; the value is the mean at the smallest dt, +- S/2;
@@ -39,8 +44,9 @@ from analysis.tables.reference import cell_key
 from analysis.theory import elastic, supersonic
 
 REQUIRED = ("nu", "f", "seed", "dt_times_cs", "elements_per_H", "celerity", "celerity_reason")
-STATUSES = ("within seed spread", "converging", "not converging", "another regime", "too few time steps")
-RUN_COLUMNS = ("nu", "f", "dt_times_cs", "n_runs", "n_backward", "mean", "min", "max", "range",
+STATUSES = ("within seed spread", "converging", "not converging", "another regime", "left the model",
+            "too few time steps")
+RUN_COLUMNS = ("nu", "f", "dt_times_cs", "n_runs", "n_backward", "n_non_physical", "mean", "min", "max", "range",
                "theory", "published", "dev_theory", "dev_published")
 CELL_COLUMNS = ("nu", "f", "published", "theory", "status", "d_prev", "d_last", "range_smallest",
                 "value", "value_halfwidth", "dev_value_theory", "smallest_dt", "mean_smallest_dt",
@@ -83,10 +89,11 @@ def dt_rows(runs: list[dict[str, Any]], published: dict) -> list[dict[str, Any]]
         if len(meshes) > 1:
             raise InputError(f"cell nu={nu:g} f={f:g} dt c_s={dt:g}: runs at several meshes "
                              f"{sorted(meshes)}; pass tables of one mesh")
-        fronts = [c for c in map(_backward, rows) if c is not None]
+        physical = [r for r in rows if not r.get("non_physical")]
+        fronts = [c for c in map(_backward, physical) if c is not None]
         adams = adams_celerity(nu, f)
-        row = {"nu": nu, "f": f, "dt_times_cs": dt, "elements_per_H": meshes.pop(), "n_runs": len(rows),
-               "n_backward": len(fronts),
+        row = {"nu": nu, "f": f, "dt_times_cs": dt, "elements_per_H": meshes.pop(), "n_runs": len(physical),
+               "n_backward": len(fronts), "n_non_physical": len(rows) - len(physical),
                "theory": adams, "published": published[(nu, f)]}
         if fronts:
             mean = statistics.fmean(fronts)
@@ -104,6 +111,8 @@ def cell_status(rows: list[dict[str, Any]]) -> dict[str, Any]:
     last = rows[-3:]
     if len(last) < 3 or any(not math.isclose(b["dt_times_cs"] * 2, a["dt_times_cs"]) for a, b in zip(last, last[1:])):
         return out
+    if any(r["n_runs"] == 0 for r in last):
+        return dict(out, status="left the model")
     if any(2 * r["n_backward"] < r["n_runs"] or r["n_backward"] == 0 for r in last):
         return dict(out, status="another regime")
     m1, m2, m3 = (r["mean"] for r in last)
@@ -157,6 +166,9 @@ def summarize(cells: list[dict[str, Any]], published: dict, tolerance: float) ->
     else:
         limit = (f"The celerity settles as $\\Delta t \\to 0$ in {limited} of the {len(cells)} cells only: "
                  "it is not a converged quantity of the method in general.")
+    if counts["left the model"]:
+        limit += (f" In {counts['left the model']} of them every run at one of the smallest time steps left the "
+                  "model (the layer gained energy that no work put in), so the method cannot take the step there.")
     tol = f"{100 * tolerance:g}\\,\\%"
     follow = (f"Within {tol} of Adams' speed: ours at the smallest time step in {ours_smallest} of "
               f"{len(smallest)} cells (the settled value in {ours} of the {len(with_value)} cells that settle), "
@@ -175,13 +187,18 @@ def _f3(v) -> str:
     return "" if v is None else f"{v:.3f}"
 
 
+def _backward_of_runs(r) -> str:
+    """'backward/physical runs', and how many runs left the model."""
+    text = f"{r['n_backward']}/{r['n_runs']}"
+    return text + f" ({r['n_non_physical']} non-physical)" if r.get("n_non_physical") else text
+
+
 #: The columns of the per-run-set table (timestep_limit.md, timestep_limit.tex).
 RUN_TABLE = (
     Column("nu", lambda r: f"{r['nu']:g}", r"$\nu$", lambda r: f"{r['nu']:g}"),
     Column("f", lambda r: f"{r['f']:g}", "$f$", lambda r: f"{r['f']:g}"),
     Column("dt c_s", lambda r: f"{r['dt_times_cs']:g}", r"$\Delta t\,c_s$ (m)", lambda r: f"{r['dt_times_cs']:g}"),
-    Column("backward/runs", lambda r: f"{r['n_backward']}/{r['n_runs']}", "backward",
-           lambda r: f"{r['n_backward']}/{r['n_runs']}"),
+    Column("backward/runs", _backward_of_runs, "backward", _backward_of_runs),
     *[Column(key, lambda r, key=key: _f3(r.get(key)), key, lambda r, key=key: _n(r.get(key))) for key in ("mean", "min", "max")],
     Column("Adams", lambda r: _f3(r["theory"]), "Adams", lambda r: _n(r["theory"])),
     Column("published", lambda r: _f3(r["published"]), "published", lambda r: _n(r["published"])),

@@ -54,6 +54,18 @@ def test_converging_sequence_gets_the_richardson_limit():
     assert c["value"] == pytest.approx(-2.20)  # r = 0.5: -2.25 + 0.05
 
 
+def test_a_time_step_whose_runs_all_left_the_model_is_no_sample():
+    runs = cell(0.45, 1.0, (-2.66, -2.40, -2.30, -2.25), 0.02)
+    for r in runs:  # the smallest step's runs created energy: no front is measured on them
+        if r["dt_times_cs"] == 0.0625:
+            r.update(non_physical=True, celerity=math.nan, celerity_reason="no_major_front")
+    rows = timestep_limit.dt_rows(runs, {c.key: c.celerity for c in REFERENCE})
+    assert (rows[-1]["n_runs"], rows[-1]["n_backward"], rows[-1]["n_non_physical"]) == (0, 0, 2)
+    assert rows[0]["n_non_physical"] == 0
+    assert statuses(runs)[(0.45, 1.0)]["status"] == "left the model"
+    assert "0/0 (2 non-physical)" in timestep_limit.markdown(rows, [], {"limit_sentence": "", "theory_sentence": ""})
+
+
 def test_differences_below_the_seed_spread_settle():
     c = statuses(cell(0.45, 1.0, (-2.66, -2.30, -2.32, -2.31), 0.05))[(0.45, 1.0)]
     assert c["status"] == "within seed spread" and c["value"] == pytest.approx(-2.31)
