@@ -126,7 +126,8 @@ int main(int argc, char** argv) {
       }
       const slidewave::LoopState start = slidewave::captured_loop_state(model, observer.start);
       slidewave::PlainSlipStep plain(model, record.u_x_preshear);
-      slidewave::WavenumberSlipStep modes(model, record.u_x_preshear, plain.settings(), plain.friction());
+      const slidewave::WavenumberBlocks blocks(model);
+      slidewave::WavenumberSlipStep modes(model, blocks, record.u_x_preshear, plain.settings(), plain.friction());
       const Cost a = time_steps(plain, start, steps, repeats);
       const Cost b = time_steps(modes, start, steps, repeats);
       const Eigen::VectorXd& u_plain = plain.state().dynamics.u;

@@ -59,7 +59,8 @@ struct StickRun {
 /// of every step as the recorder would ask for them.
 StickRun run_stick(const slidewave::LayerModel& m, double u_x_top, const slidewave::LoopState& start,
                    double tolerance) {
-  slidewave::StickPhase stick(m, u_x_top, tolerance);
+  const slidewave::WavenumberBlocks blocks(m);
+  slidewave::StickPhase stick(m, blocks, u_x_top, tolerance);
   const auto law = slidewave::make_friction_law(m.config.friction);
   const auto bounds = law->bounds(start.friction);
   stick.start(start);

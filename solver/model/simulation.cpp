@@ -258,9 +258,17 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
                            if (observer) observer->after_step(recorder.rows(), full);
                          }};
 
+  // The layer's blocks per wavenumber, which both phases step on (made once, where one of them runs).
+  std::optional<WavenumberBlocks> blocks;
+  const auto wavenumber_blocks = [&]() -> const WavenumberBlocks& {
+    if (!blocks) blocks.emplace(m);
+    return *blocks;
+  };
+
   // 4. The stick phase in wavenumbers, while every node sticks (model/stick_phase/stick_phase_run.hpp).
   if (stick_phase && !resumed_in_slip_phase && all_stuck(loop.contact)) {
-    run_stick_phase(m, pre.u_x_top, *friction, loop.step > 0 ? seeded : loop, n_steps_max, recorder, hooks, loop);
+    run_stick_phase(m, wavenumber_blocks(), pre.u_x_top, *friction, loop.step > 0 ? seeded : loop, n_steps_max,
+                    recorder, hooks, loop);
     watch.lap(&StepProfile::stick_phase);
     watch.count_stick_phase(loop.step);
   }
@@ -269,7 +277,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   //    the stick phase has freed its lanes, so that the two never hold memory at once (and not at all when the
   //    run ends in the stick phase).
   if (slip_phase && before_end(loop.step, n_steps_max, loop, hht.dt)) {
-    slip = std::make_unique<WavenumberSlipStep>(m, pre.u_x_top, settings, *friction);
+    slip = std::make_unique<WavenumberSlipStep>(m, wavenumber_blocks(), pre.u_x_top, settings, *friction);
     if (resumed_in_slip_phase)
       slip->restore(loop, *resumed);
     else

@@ -161,7 +161,8 @@ TEST(StickPhase, IsPlainSteppingToRoundOffAndSlipsOnTheSameStep) {
       const std::int64_t checked = 300;
       PlainRun plain(m, {checked});
       ASSERT_GT(plain.first_slip(), checked) << what;
-      StickPhase stick(m, plain.record().u_x_preshear, 0.0);  // no retirement
+      const WavenumberBlocks blocks(m);
+      StickPhase stick(m, blocks, plain.record().u_x_preshear, 0.0);  // no retirement
       const Agreement a = compare_at(m, plain, stick, checked);
       report((what + " no retirement").c_str(), a);
       expect_round_off(a, what);
@@ -181,7 +182,8 @@ TEST(StickPhase, RetiresWavenumbersWithoutChangingTheAgreement) {
     const std::int64_t checked = 900;
     PlainRun plain(m, {checked});
     ASSERT_GT(plain.first_slip(), checked);
-    StickPhase stick(m, plain.record().u_x_preshear);
+    const WavenumberBlocks blocks(m);
+    StickPhase stick(m, blocks, plain.record().u_x_preshear);
     const Agreement a = compare_at(m, plain, stick, checked);
     report((std::string("H/32 retiring ") + weighting).c_str(), a);
     expect_round_off(a, weighting);

@@ -64,7 +64,8 @@ TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
   EXPECT_TRUE(plain.state().contact == loop_end.contact);
 
   plain.start(start);
-  WavenumberSlipStep modes(m, record.u_x_preshear, plain.settings(), plain.friction());
+  const WavenumberBlocks blocks(m);
+  WavenumberSlipStep modes(m, blocks, record.u_x_preshear, plain.settings(), plain.friction());
   modes.start(start);
   LoopState rebuilt = start;
   // The round-off model of the bound. Each way of stepping computes u(n+1) by backward-stable solves, so a
@@ -109,10 +110,11 @@ TEST(WavenumberSlipStep, StepsThePlainSlipStepToRoundOff) {
 // (from its K_eff factorization) to round-off, and block-circulant and symmetric as the contact solver needs.
 TEST(WavenumberSlipStep, ItsDelassusOperatorIsThePlainOne) {
   for (const char* weighting : {"alpha", "end"}) {
-    const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 8}}},
-                                             {"time", {{"contact_weighting", weighting}}}}));
+    const LayerModel m(
+        testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"time", {{"contact_weighting", weighting}}}}));
     const PlainSlipStep plain(m, 0.0);
-    const WavenumberSlipStep modes(m, 0.0, plain.settings(), plain.friction());
+    const WavenumberBlocks blocks(m);
+    const WavenumberSlipStep modes(m, blocks, 0.0, plain.settings(), plain.friction());
     const Eigen::MatrixXd &W = modes.delassus(), &W_plain = plain.delassus();
     const double scale = W_plain.cwiseAbs().maxCoeff();
     const double difference = (W - W_plain).cwiseAbs().maxCoeff() / scale;

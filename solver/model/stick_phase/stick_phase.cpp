@@ -4,11 +4,11 @@
 
 namespace slidewave {
 
-StickPhase::StickPhase(const LayerModel& layer, double u_x_top, double retire_tolerance)
+StickPhase::StickPhase(const LayerModel& layer, const WavenumberBlocks& blocks, double u_x_top, double retire_tolerance)
     : layer_(layer),
       hht_(layer.config.time.hht_alpha, layer.d.dt),
       u_x_top_(u_x_top),
-      blocks_(layer),
+      blocks_(blocks),
       transform_(layer.mesh.n_x),
       // The transient factor of the retirement test is measured for the paper's hht_alpha = 0.1 (at a smaller
       // alpha the high frequencies decay slower and grow more before they do): elsewhere, no retirement.

@@ -26,9 +26,11 @@ class StickPhase {
   /// an entry of the layer's size (half an ulp: 2^-54 of the scale).
   static constexpr double kRetireTolerance = 0x1p-54;
 
-  /// @param layer the layer (must outlive this object); u_x_top: the preload's top shear displacement
+  /// @param layer  the layer and its blocks per wavenumber (both must outlive this object); u_x_top: the preload's
+  ///               top shear displacement
   /// @param retire_tolerance 0: never retire (also what any hht_alpha but the paper's 0.1 gets)
-  StickPhase(const LayerModel& layer, double u_x_top, double retire_tolerance = kRetireTolerance);
+  StickPhase(const LayerModel& layer, const WavenumberBlocks& blocks, double u_x_top,
+             double retire_tolerance = kRetireTolerance);
 
   /// Starts from the layer's loop state (all contact nodes sticking), e.g. the seeded state at t = 0.
   void start(const LoopState& loop);
@@ -58,7 +60,7 @@ class StickPhase {
   const LayerModel& layer_;
   HHTCoefficients hht_;
   double u_x_top_;
-  WavenumberBlocks blocks_;
+  const WavenumberBlocks& blocks_;
   RowTransform transform_;
   WavenumberStepper stepper_;
   StickPhaseLedger ledger_;

@@ -27,9 +27,10 @@ bool stick_phase_applies(const LayerModel& m, const LoopState& loop) {
   return may_step_in_wavenumbers(m) && f.f > 0 && f.regularization == Regularization::none && all_stuck(loop.contact);
 }
 
-void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& friction, const LoopState& seeded,
-                     std::int64_t n_steps_max, Recorder& recorder, const PhaseHooks& hooks, LoopState& loop) {
-  StickPhase stick(m, u_x_top);
+void run_stick_phase(const LayerModel& m, const WavenumberBlocks& blocks, double u_x_top, const FrictionLaw& friction,
+                     const LoopState& seeded, std::int64_t n_steps_max, Recorder& recorder, const PhaseHooks& hooks,
+                     LoopState& loop) {
+  StickPhase stick(m, blocks, u_x_top);
   stick.start(seeded);
   const std::unique_ptr<FrictionBounds> bounds = friction.bounds(loop.friction);
   if (loop.step > 0 && !replay_to(stick, *bounds, loop)) return;

@@ -20,16 +20,18 @@
 #include "model/loop_state.hpp"
 #include "model/recorder.hpp"
 #include "model/stick_phase/phase_support.hpp"
+#include "model/stick_phase/wavenumber_blocks.hpp"
 
 namespace slidewave {
 
 /// True where the phase applies (above) to a run in state `loop`.
 bool stick_phase_applies(const LayerModel& m, const LoopState& loop);
 
-/// Runs the phase. `seeded`: the state at t = 0; `loop`: the state to go on from (the seeded state, or a
-/// checkpoint's; it may be the same object), on return the full state after the phase's last step.
-/// Steps stop before n_steps_max and before t_end as simulate()'s loop does.
-void run_stick_phase(const LayerModel& m, double u_x_top, const FrictionLaw& friction, const LoopState& seeded,
-                     std::int64_t n_steps_max, Recorder& recorder, const PhaseHooks& hooks, LoopState& loop);
+/// Runs the phase on the layer's blocks per wavenumber. `seeded`: the state at t = 0; `loop`: the state to go on from
+/// (the seeded state, or a checkpoint's; it may be the same object), on return the full state after the phase's last
+/// step. Steps stop before n_steps_max and before t_end as simulate()'s loop does.
+void run_stick_phase(const LayerModel& m, const WavenumberBlocks& blocks, double u_x_top, const FrictionLaw& friction,
+                     const LoopState& seeded, std::int64_t n_steps_max, Recorder& recorder, const PhaseHooks& hooks,
+                     LoopState& loop);
 
 }  // namespace slidewave

@@ -10,15 +10,15 @@
 
 namespace slidewave {
 
-WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, double u_x_top, const GaussSeidelSettings& settings,
-                                       const FrictionLaw& law)
+WavenumberSlipStep::WavenumberSlipStep(const LayerModel& layer, const WavenumberBlocks& blocks, double u_x_top,
+                                       const GaussSeidelSettings& settings, const FrictionLaw& law)
     : layer_(layer),
       hht_(layer.config.time.hht_alpha, layer.d.dt),
       u_x_top_(u_x_top),
       w_(layer.config.time.contact_weighting == ContactWeighting::alpha ? 1 - hht_.alpha : 1.0),
       w_previous_(layer.config.time.contact_weighting == ContactWeighting::alpha ? hht_.alpha : 0.0),
       law_(law),
-      blocks_(layer),
+      blocks_(blocks),
       transform_(layer.mesh.n_x),
       A_eff_(effective_band(blocks_, hht_), 0),
       state_(blocks_.s, blocks_.lanes, false),

@@ -37,10 +37,11 @@ namespace slidewave {
 
 class WavenumberSlipStep {
  public:
-  /// @param layer  the layer (must outlive this object); u_x_top: the preload's top shear displacement
+  /// @param layer  the layer and its blocks per wavenumber (both must outlive this object); u_x_top: the
+  ///               preload's top shear displacement
   /// @param law    the friction law (must outlive this object)
-  WavenumberSlipStep(const LayerModel& layer, double u_x_top, const GaussSeidelSettings& settings,
-                     const FrictionLaw& law);
+  WavenumberSlipStep(const LayerModel& layer, const WavenumberBlocks& blocks, double u_x_top,
+                     const GaussSeidelSettings& settings, const FrictionLaw& law);
 
   /// The Delassus operator W = w C A_eff^-1 C^T of the contact solve, from the lanes' responses to a unit load
   /// on a contact node (what plain stepping gets from its K_eff factorization: the same to round-off).
@@ -92,7 +93,7 @@ class WavenumberSlipStep {
   HHTCoefficients hht_;
   double u_x_top_, w_, w_previous_;
   const FrictionLaw& law_;
-  WavenumberBlocks blocks_;
+  const WavenumberBlocks& blocks_;
   RowTransform transform_;
   BandedLaneFactor A_eff_;                 ///< A_eff,m = b M_m + (1-a) K_m on all s rows
   std::vector<double> G0_, G1_;            ///< w A_eff,m^-1 e_0, w A_eff,m^-1 e_1 (row r, lane m at r lanes + m)
