@@ -17,10 +17,11 @@ The rule for a limit (docs/supersonic-backward.md, section 6; fixed before any r
 seed means m1, m2, m3 (largest dt first), the differences d_prev = m2 - m1, d_last = m3 - m2, and the
 seed range S = max - min at the smallest dt:
 
-- *left the model*: at one of those dt every run is `non_physical` (added with analysis version 8, when
-  the runs at dt c_s = 0.0625 m were found to create energy: docs/physics-notes.md, section 8): the
+- *another regime*: at one of those dt fewer than half of the runs have a backward front (of the runs
+  that stay physical, where there are any);
+- *left the model*: else, at one of those dt every run is `non_physical` (added with analysis version 8,
+  when the runs at dt c_s = 0.0625 m were found to create energy: docs/physics-notes.md, section 8): the
   method cannot go to that dt, and nothing is said about a limit;
-- *another regime*: at one of those dt fewer than half of the runs have a backward front;
 - *within seed spread*: |d_prev| <= S and |d_last| <= S: halving dt moves the mean by no more than
   the seeds scatter; the value is the mean at the smallest dt, +- S/2;
 - *converging*: d_prev, d_last of one sign, |d_last| < |d_prev|, and S < |d_prev| (the shrinking is
@@ -111,10 +112,10 @@ def cell_status(rows: list[dict[str, Any]]) -> dict[str, Any]:
     last = rows[-3:]
     if len(last) < 3 or any(not math.isclose(b["dt_times_cs"] * 2, a["dt_times_cs"]) for a, b in zip(last, last[1:])):
         return out
+    if any(r["n_runs"] > 0 and (2 * r["n_backward"] < r["n_runs"] or r["n_backward"] == 0) for r in last):
+        return dict(out, status="another regime")
     if any(r["n_runs"] == 0 for r in last):
         return dict(out, status="left the model")
-    if any(2 * r["n_backward"] < r["n_runs"] or r["n_backward"] == 0 for r in last):
-        return dict(out, status="another regime")
     m1, m2, m3 = (r["mean"] for r in last)
     spread = last[-1]["range"]
     out.update(d_prev=m2 - m1, d_last=m3 - m2, range_smallest=spread)
@@ -139,6 +140,7 @@ def cell_rows(rows: list[dict[str, Any]], tolerance: float) -> list[dict[str, An
         finest = [r for r in members if r.get("mean") is not None]
         smallest = finest[-1] if finest else {}
         out.append({"nu": nu, "f": f, "published": published, "theory": adams, **status,
+                    "non_physical_dt": [r["dt_times_cs"] for r in members if r.get("n_non_physical")],
                     "smallest_dt": smallest.get("dt_times_cs"), "mean_smallest_dt": smallest.get("mean"),
                     "dev_smallest_theory": smallest.get("dev_theory"),
                     "dev_value_theory": None if value is None else (value - adams) / abs(adams),
@@ -166,9 +168,11 @@ def summarize(cells: list[dict[str, Any]], published: dict, tolerance: float) ->
     else:
         limit = (f"The celerity settles as $\\Delta t \\to 0$ in {limited} of the {len(cells)} cells only: "
                  "it is not a converged quantity of the method in general.")
-    if counts["left the model"]:
-        limit += (f" In {counts['left the model']} of them every run at one of the smallest time steps left the "
-                  "model (the layer gained energy that no work put in), so the method cannot take the step there.")
+    left = sorted({dt for c in cells for dt in c.get("non_physical_dt", [])})
+    if left:
+        steps = ", ".join(f"{dt:g}" for dt in left)
+        limit += (f" Runs at $\\Delta t\\,c_s = {steps}$\\,m left the model (the layer gained energy that no work "
+                  "put in) and are no samples.")
     tol = f"{100 * tolerance:g}\\,\\%"
     follow = (f"Within {tol} of Adams' speed: ours at the smallest time step in {ours_smallest} of "
               f"{len(smallest)} cells (the settled value in {ours} of the {len(with_value)} cells that settle), "

@@ -62,7 +62,16 @@ def test_a_time_step_whose_runs_all_left_the_model_is_no_sample():
     rows = timestep_limit.dt_rows(runs, {c.key: c.celerity for c in REFERENCE})
     assert (rows[-1]["n_runs"], rows[-1]["n_backward"], rows[-1]["n_non_physical"]) == (0, 0, 2)
     assert rows[0]["n_non_physical"] == 0
-    assert statuses(runs)[(0.45, 1.0)]["status"] == "left the model"
+    cells = timestep_limit.cell_rows(rows, 0.05)
+    assert cells[0]["status"] == "left the model" and cells[0]["non_physical_dt"] == [0.0625]
+    summary = timestep_limit.summarize(cells, {c.key: c.celerity for c in REFERENCE}, 0.05)
+    assert summary["status_counts"]["left the model"] == 1
+    assert "c_s = 0.0625$\\,m left the model" in summary["limit_sentence"]
+    # A step where the physical runs show no backward front is another regime, whatever a smaller one does.
+    for r in runs:
+        if r["dt_times_cs"] == 0.125:
+            r.update(celerity=0.8)
+    assert statuses(runs)[(0.45, 1.0)]["status"] == "another regime"
     assert "0/0 (2 non-physical)" in timestep_limit.markdown(rows, [], {"limit_sentence": "", "theory_sentence": ""})
 
 
