@@ -9,8 +9,9 @@
 namespace slidewave {
 
 ContactSolver::ContactSolver(const Eigen::MatrixXd& W, const GaussSeidelSettings& settings, DelassusLayout layout)
-    : W_(W), settings_(settings), n_nodes_(static_cast<int>(W.rows() / 2)), diagonal_blocks_(n_nodes_) {
-  for (int k = 0; k < n_nodes_; ++k) diagonal_blocks_[k] = W.block<2, 2>(2 * k, 2 * k);
+    : W_(W), settings_(settings), n_nodes_(static_cast<int>(W.rows() / 2)) {
+  diagonal_blocks_.reserve(n_nodes_);
+  for (int k = 0; k < n_nodes_; ++k) diagonal_blocks_.emplace_back(W.block<2, 2>(2 * k, 2 * k));
   if (layout == DelassusLayout::block_circulant) {
     periodic_columns_ = delassus_periodic_columns(W);
     reach_ = delassus_periodic_reach(periodic_columns_, n_nodes_, kDelassusRoundOff);
@@ -54,7 +55,7 @@ GaussSeidelReport ContactSolver::sweep_until_converged(const Eigen::VectorXd& q,
     double max_change = 0;
     for (int k = 0; k < n_nodes; ++k) {
       const Eigen::Vector2d r_old = r.segment<2>(2 * k);
-      const Eigen::Vector2d b = y.segment<2>(2 * k) - diagonal_blocks_[k] * r_old;
+      const Eigen::Vector2d b = y.segment<2>(2 * k) - diagonal_blocks_[k].D * r_old;
       const std::optional<double> given_bound = bounds.given_bound(k);
       const auto local = given_bound ? solve_local_coulomb(diagonal_blocks_[k], b, f, *given_bound)
                                      : solve_local_coulomb(diagonal_blocks_[k], b, f);

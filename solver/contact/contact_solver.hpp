@@ -104,9 +104,9 @@ class ContactSolver {
   const Eigen::MatrixXd& W_;
   GaussSeidelSettings settings_;
   int n_nodes_;
-  std::vector<Eigen::Matrix2d> diagonal_blocks_;
-  Eigen::MatrixXd periodic_columns_;  ///< delassus_periodic_columns(W) (block-circulant W), else empty
-  int reach_ = 0;                     ///< node distance beyond which W's blocks are round-off (delassus_periodic_reach)
+  std::vector<LocalOperator> diagonal_blocks_;  ///< W's 2 x 2 diagonal blocks, factorized
+  Eigen::MatrixXd periodic_columns_;            ///< delassus_periodic_columns(W) (block-circulant W), else empty
+  int reach_ = 0;  ///< node distance beyond which W's blocks are round-off (delassus_periodic_reach)
   std::optional<BlockCirculantProduct> periodic_product_;  ///< W r by FFT (block-circulant W)
   std::optional<AllStickSolution> all_stick_;              ///< block-circulant W only
 };

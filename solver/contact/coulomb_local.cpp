@@ -4,15 +4,16 @@
 
 namespace slidewave {
 
-LocalContactSolution solve_local_coulomb(const Eigen::Matrix2d& D, const Eigen::Vector2d& b, double f,
+LocalContactSolution solve_local_coulomb(const LocalOperator& A, const Eigen::Vector2d& b, double f,
                                          std::optional<double> fixed_bound) {
+  const Eigen::Matrix2d& D = A.D;
   // Open: no reaction, the free gap is non-negative.
   if (b.y() >= 0) return {Eigen::Vector2d::Zero(), ContactState::open, true};
 
   const auto bound = [&](double r_y) { return fixed_bound ? *fixed_bound : f * r_y; };
 
   // Stick: du_x = 0 and u_y = 0.
-  const Eigen::Vector2d r_stick = -D.ldlt().solve(b);
+  const Eigen::Vector2d r_stick = -A.D_ldlt.solve(b);
   const double slack = 1e-14 * std::fabs(r_stick.y());
   if (r_stick.y() >= 0 && std::fabs(r_stick.x()) <= bound(r_stick.y()) + slack)
     return {r_stick, ContactState::stick, true};

@@ -29,9 +29,21 @@ struct LocalContactSolution {
   bool consistent;  ///< false only if no case satisfied every condition (not expected for SPD D)
 };
 
+/// D and its L D L^T, factorized once for the many local solves of a node (the same as factorizing it per solve).
+struct LocalOperator {
+  explicit LocalOperator(const Eigen::Matrix2d& block) : D(block), D_ldlt(block) {}
+  Eigen::Matrix2d D;
+  Eigen::LDLT<Eigen::Matrix2d> D_ldlt;
+};
+
 /// @param f            friction coefficient (>= 0)
 /// @param fixed_bound  if set, the friction bound while closed is this value instead of f * r_y
-LocalContactSolution solve_local_coulomb(const Eigen::Matrix2d& D, const Eigen::Vector2d& b, double f,
+LocalContactSolution solve_local_coulomb(const LocalOperator& A, const Eigen::Vector2d& b, double f,
                                          std::optional<double> fixed_bound = std::nullopt);
+/// The same, factorizing D for this one solve.
+inline LocalContactSolution solve_local_coulomb(const Eigen::Matrix2d& D, const Eigen::Vector2d& b, double f,
+                                                std::optional<double> fixed_bound = std::nullopt) {
+  return solve_local_coulomb(LocalOperator(D), b, f, fixed_bound);
+}
 
 }  // namespace slidewave
