@@ -36,8 +36,8 @@ from analysis.fronts.tracking import DEFAULT_MIN_POINTS
 
 #: Energy a run may create, relative to the energy that flowed (`energy.energy_created`): the continuous
 #: problem creates none (the top's work is its only source), so this only absorbs the ledger's round-off
-#: (1e-12) and its trapezoidal booking of W_ext; runs that create energy were measured at 0.11 to 1.9
-#: (docs/physics-notes.md, section 8).
+#: (1e-12) and its trapezoidal booking of W_ext; runs that create energy were measured at 0.03 to 1.95, the
+#: others at 0 (H/32, H/64) or at most 5.3e-6 (H/128) (docs/physics-notes.md, section 8).
 ENERGY_CREATED_LIMIT = 1e-3
 
 #: Fewest interface output frames per shear round trip 2H/c_s (and in the whole run).
