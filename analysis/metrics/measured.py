@@ -208,10 +208,14 @@ def measure(run: RunData, settings: Settings) -> Measured:
              if f > 0 else [])
     created = energy.energy_created(series.energy_kinetic, series.energy_elastic, series.work_external,
                                     series.dissipation_friction)
+    non_physical_reason = validity.non_physical_reason(run, opened.max_opening, created)
+    if non_physical_reason is not None:  # a state outside the model: no rule measured the model
+        by_rule = {name: validity.without_celerity(result) for name, result in by_rule.items()}
+        high_threshold = validity.without_celerity(high_threshold)
     return Measured(run=run, settings=settings, parameters=parameters,
                     sampled=validity.sampling(t, H, c_s), onset_time=onset_time, threshold=threshold,
                     window_length=window_length, major_duration=major_duration, front_map=front_map,
                     localization=localization, opened=opened, by_rule=by_rule,
                     high_threshold=high_threshold, count_all=count_all, spacing_all=spacing_all,
                     drops=drops, min_ratio=min_ratio, t_min_ratio=t_min_ratio, energy_created=created,
-                    non_physical_reason=validity.non_physical_reason(run, opened.max_opening, created))
+                    non_physical_reason=non_physical_reason)

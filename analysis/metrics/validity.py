@@ -6,7 +6,9 @@ Three ways a run can produce numbers that look like a result and are not:
   can open by hundreds of metres on a 25 m layer, or hold non-finite values. The model is linear
   elasticity of a layer of height H under small strains: an opening larger than H is outside it
   whatever the cause. Such a run is `non_physical`; its metrics are kept (measured on the finite
-  part of the run) so that the state stays visible, and it stays out of Table 1.
+  part of the run) so that the state stays visible, but not its celerity: the growth that ends
+  outside the model starts before it is detected, so no rule's fit is a measurement of the model
+  (`without_celerity`: undefined, reason `non_physical`, in every table).
 - **Energy created.** Friction, the unilateral contact and HHT-alpha only take energy out; the top's
   work is the only source. A run whose E_kin + E_el exceeds its start plus that work by more than
   `ENERGY_CREATED_LIMIT` of the energy that flowed has been driven by the discrete scheme, not the
@@ -32,6 +34,7 @@ import numpy as np
 
 from analysis.core.errors import InputError
 from analysis.core.io import GlobalSeries, InterfaceFields, RunData
+from analysis.fronts.rules import RuleResult
 from analysis.fronts.tracking import DEFAULT_MIN_POINTS
 
 #: Energy a run may create, relative to the energy that flowed (`energy.energy_created`): the continuous
@@ -39,6 +42,9 @@ from analysis.fronts.tracking import DEFAULT_MIN_POINTS
 #: (1e-12) and its trapezoidal booking of W_ext; runs that create energy were measured at 0.03 to 1.95, the
 #: others at 0 (H/32, H/64) or at most 5.3e-6 (H/128) (docs/physics-notes.md, section 8).
 ENERGY_CREATED_LIMIT = 1e-3
+
+#: The reason of a celerity that a non-physical run would have had.
+NON_PHYSICAL = "non_physical"
 
 #: Fewest interface output frames per shear round trip 2H/c_s (and in the whole run).
 MIN_FRAMES_PER_ROUND_TRIP = DEFAULT_MIN_POINTS
@@ -77,6 +83,14 @@ def non_physical_reason(run: RunData, max_opening: float, energy_created: float 
         return (f"energy_created: E_kin + E_el exceeded E(0) + W_ext by {energy_created:.3g} of the energy "
                 f"that flowed (> {ENERGY_CREATED_LIMIT:g})")
     return None
+
+
+def without_celerity(result: RuleResult) -> RuleResult:
+    """A rule's result on a non-physical run: its fit (fronts, window) kept for the diagnostics, its
+    celerity undefined with the reason NON_PHYSICAL; a result already undefined keeps its own reason."""
+    if result.reason != "ok":
+        return result
+    return replace(result, celerity=math.nan, reason=NON_PHYSICAL, deceleration=math.nan)
 
 
 def _first_bad(t: np.ndarray, arrays: list[np.ndarray]) -> float:
