@@ -71,37 +71,61 @@ void BandedLanes::multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1,
   }
 }
 
+namespace {
+
+/// The band L D L^T of lane m's trailing block (rows and columns [first, A.rows)) into band (row r's entries
+/// (r, r - p..r) at r (p + 1) + r - c; the unit diagonal's place holds D) and D. Returns the first pivot
+/// that is not positive and finite (the factorization stops there), or -1.
+int band_ldlt(const BandedLanes& A, int first, int m, std::vector<double>& band, std::vector<double>& D) {
+  const int n = A.rows - first, p = A.p;
+  const auto entry = [&band, p](int r, int c) -> double& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
+  for (int r = 0; r < n; ++r)
+    for (int c = std::max(0, r - p); c <= r; ++c) entry(r, c) = A.get(first + r, c - r, m);
+  for (int r = 0; r < n; ++r) {
+    const int lowest = std::max(0, r - p);
+    for (int c = lowest; c < r; ++c) {
+      double v = entry(r, c);
+      for (int q = lowest; q < c; ++q) v -= entry(r, q) * D[q] * entry(c, q);
+      entry(r, c) = v / D[c];
+    }
+    double d = entry(r, r);
+    for (int q = lowest; q < r; ++q) d -= entry(r, q) * entry(r, q) * D[q];
+    D[r] = d;
+    if (!(d > 0) || !std::isfinite(d)) return r;
+  }
+  return -1;
+}
+
+}  // namespace
+
 BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
     : first_(first), n_(A.rows - first), p_(A.p), lanes_(A.lanes) {
   const int n = n_, p = p_;
   L_.assign(static_cast<std::size_t>(n) * std::max(p, 1) * lanes_, 0.0);
   inv_D_.assign(static_cast<std::size_t>(n) * lanes_, 0.0);
-  std::vector<double> band(static_cast<std::size_t>(n) * (p + 1));
-  const auto entry = [&band, p](int r, int c) -> double& { return band[r * (p + 1) + (r - c)]; };  // r-p <= c <= r
-  std::vector<double> D(n);
+  std::vector<double> band(static_cast<std::size_t>(n) * (p + 1)), D(n);
   for (int m = 0; m < lanes_; ++m) {
-    for (int r = 0; r < n; ++r)
-      for (int c = std::max(0, r - p); c <= r; ++c) entry(r, c) = A.get(first + r, c - r, m);
+    const int failed = band_ldlt(A, first, m, band, D);
+    if (failed >= 0) {
+      std::ostringstream msg;
+      msg << "BandedLaneFactor: lane " << m << " is not positive definite (pivot " << failed << " = " << D[failed]
+          << ")";
+      throw std::runtime_error(msg.str());
+    }
     for (int r = 0; r < n; ++r) {
-      const int lowest = std::max(0, r - p);
-      for (int c = lowest; c < r; ++c) {
-        double v = entry(r, c);
-        for (int q = lowest; q < c; ++q) v -= entry(r, q) * D[q] * entry(c, q);
-        entry(r, c) = v / D[c];
-      }
-      double d = entry(r, r);
-      for (int q = lowest; q < r; ++q) d -= entry(r, q) * entry(r, q) * D[q];
-      if (!(d > 0) || !std::isfinite(d)) {
-        std::ostringstream msg;
-        msg << "BandedLaneFactor: lane " << m << " is not positive definite (pivot " << r << " = " << d << ")";
-        throw std::runtime_error(msg.str());
-      }
-      D[r] = d;
-      inv_D_[static_cast<std::size_t>(r) * lanes_ + m] = 1.0 / d;
+      inv_D_[static_cast<std::size_t>(r) * lanes_ + m] = 1.0 / D[r];
       for (int k = 1; k <= p && k <= r; ++k)
-        L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = entry(r, r - k);
+        L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = band[r * (p + 1) + k];
     }
   }
+}
+
+std::vector<bool> positive_definite_lanes(const BandedLanes& A, int first) {
+  const int n = A.rows - first;
+  std::vector<double> band(static_cast<std::size_t>(n) * (A.p + 1)), D(n);
+  std::vector<bool> definite(A.lanes);
+  for (int m = 0; m < A.lanes; ++m) definite[m] = band_ldlt(A, first, m, band, D) < 0;
+  return definite;
 }
 
 namespace {

@@ -56,4 +56,9 @@ class BandedLaneFactor {
   std::vector<double> inv_D_;  ///< 1 / D(q) at q lanes + m
 };
 
+/// Per lane, whether the trailing block (rows and columns [first, rows)) of A is positive definite: its band
+/// L D L^T has positive pivots only. For A = K - sigma M (M positive definite) that says, by Sylvester's law of
+/// inertia, that every eigenvalue of K x = lambda M x on the block is above sigma.
+std::vector<bool> positive_definite_lanes(const BandedLanes& A, int first);
+
 }  // namespace slidewave

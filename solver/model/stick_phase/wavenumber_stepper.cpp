@@ -37,26 +37,28 @@ double max_distance(const LaneVectors& a, const LaneVectors* b, int m, int r0 = 
   return d;
 }
 
-/// dt sqrt(lambda_min) of K_II x = lambda M_II x per lane, by inverse iteration (the interior of K factorized).
-std::vector<double> lowest_frequencies(const WavenumberBlocks& blocks, const BandedLaneFactor& K_interior, double dt) {
+/// dt sqrt(lambda_min) of K_II x = lambda M_II x for lanes [0, m_end), by inverse iteration (the interior of K
+/// factorized; each lane on its own).
+std::vector<double> lowest_frequencies(const WavenumberBlocks& blocks, const BandedLaneFactor& K_interior, double dt,
+                                       int m_end) {
   const int s = blocks.s, lanes = blocks.lanes;
   LaneVectors x(s, lanes), Mx(s, lanes), Kx(s, lanes);
   for (int r = 2; r < s; ++r)
-    for (int m = 0; m < lanes; ++m) x.set(r, m, 1.0 + 0.1 * r);  // any start with a share of the lowest mode
-  std::vector<double> lambda(lanes, 0.0);
+    for (int m = 0; m < m_end; ++m) x.set(r, m, 1.0 + 0.1 * r);  // any start with a share of the lowest mode
+  std::vector<double> lambda(m_end, 0.0);
   for (int iteration = 0; iteration < 60; ++iteration) {
-    blocks.M.multiply(x, Mx, 0, s, lanes);
+    blocks.M.multiply(x, Mx, 0, s, m_end);
     for (int c = 0; c < 2; ++c)
-      for (int m = 0; m < lanes; ++m) Mx.set(c, m, 0.0);
-    K_interior.solve(Mx, lanes);  // x <- K_II^-1 M_II x, normalized
-    for (int m = 0; m < lanes; ++m) {
+      for (int m = 0; m < m_end; ++m) Mx.set(c, m, 0.0);
+    K_interior.solve(Mx, m_end);  // x <- K_II^-1 M_II x, normalized
+    for (int m = 0; m < m_end; ++m) {
       const double norm = max_distance(Mx, nullptr, m, 2, s);
       for (int r = 2; r < s; ++r) x.set(r, m, Mx.get(r, m) / norm);
     }
   }
-  blocks.M.multiply(x, Mx, 0, s, lanes);
-  blocks.K.multiply(x, Kx, 0, s, lanes);
-  for (int m = 0; m < lanes; ++m) {
+  blocks.M.multiply(x, Mx, 0, s, m_end);
+  blocks.K.multiply(x, Kx, 0, s, m_end);
+  for (int m = 0; m < m_end; ++m) {
     double xKx = 0, xMx = 0;
     for (int r = 2; r < s; ++r) {
       xKx += (std::conj(x.get(r, m)) * Kx.get(r, m)).real();
@@ -65,6 +67,27 @@ std::vector<double> lowest_frequencies(const WavenumberBlocks& blocks, const Ban
     lambda[m] = dt * std::sqrt(xKx / xMx);
   }
   return lambda;
+}
+
+/// The transient growth factor of each lane's retirement test (docs/stick-phase.md, "Retirement"): HHT's
+/// amplification of one frequency Omega = omega dt, in the units (u, dt v, beta dt^2 a), grows a start by at
+/// most max(6.3, 1.65 / Omega) (measured over Omega, all powers), times 3 >= sqrt(cond M) from the modes to the
+/// DOFs; Omega the lane's slowest frequency. Where that frequency is above 1.65 / 6.3 the factor is the floor
+/// 3 x 6.3 whatever its value: a lane whose K_II - sigma M_II is positive definite (sigma at that frequency,
+/// with a margin of 1e-9 for round-off) has it there by Sylvester's law of inertia, one band factorization
+/// instead of the inverse iteration, which runs on the lanes below the highest uncertified one only.
+std::vector<double> transient_factors(const WavenumberBlocks& blocks, const BandedLaneFactor& K_interior, double dt) {
+  constexpr double floor_growth = 6.3, low_frequency_growth = 1.65;
+  const double omega_floor = low_frequency_growth / floor_growth * (1 + 1e-9), sigma = std::pow(omega_floor / dt, 2);
+  BandedLanes shifted = blocks.K;
+  for (std::size_t e = 0; e < shifted.a.size(); ++e) shifted.a[e] = blocks.K.a[e] - sigma * blocks.M.a[e];
+  const std::vector<bool> above_floor = positive_definite_lanes(shifted, 2);
+  int m_end = blocks.lanes;
+  while (m_end > 0 && above_floor[m_end - 1]) --m_end;
+  const std::vector<double> omega = lowest_frequencies(blocks, K_interior, dt, m_end);
+  std::vector<double> factor(blocks.lanes, 3 * floor_growth);
+  for (int m = 0; m < m_end; ++m) factor[m] = 3 * std::max(floor_growth, low_frequency_growth / omega[m]);
+  return factor;
 }
 
 }  // namespace
@@ -85,11 +108,7 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
       U_static_(blocks.s, blocks.lanes),
       KU_static_(blocks.s, blocks.lanes),
       MU_static_(blocks.s, blocks.lanes) {
-  // Transient growth of a lane's distance from its static state (docs/stick-phase.md): HHT's amplification
-  // of one frequency Omega = omega dt, in the units (u, dt v, beta dt^2 a), grows a start by at most
-  // max(6.3, 1.65 / Omega) (measured over Omega, all powers), times 3 >= sqrt(cond M) from the modes to the DOFs.
-  lowest_frequency_ = lowest_frequencies(blocks, K_interior_, hht.dt);
-  for (const double omega : lowest_frequency_) transient_factor_.push_back(3 * std::max(6.3, 1.65 / omega));
+  transient_factor_ = transient_factors(blocks, K_interior_, hht.dt);
 }
 
 void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {

@@ -79,8 +79,6 @@ class WavenumberStepper {
   double retired_elastic() const { return retired_elastic_; }
   /// The transient growth factor of lane m in the retirement test (docs/stick-phase.md).
   double transient_factor(int m) const { return transient_factor_[m]; }
-  /// dt sqrt(lowest eigenvalue of K_II,m relative to M_II,m): lane m's slowest frequency times dt.
-  double lowest_frequency(int m) const { return lowest_frequency_[m]; }
 
  private:
   /// True if lane m is within the retirement bound of its static state.
@@ -100,7 +98,7 @@ class WavenumberStepper {
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
   bool track_shift_ = false;
-  std::vector<double> lowest_frequency_, transient_factor_;
+  std::vector<double> transient_factor_;
 };
 
 }  // namespace slidewave
