@@ -23,6 +23,7 @@
 
 #include "config/config_keys.hpp"
 #include "config/run_config.hpp"
+#include "config/step_advice.hpp"
 #include "git_version.hpp"
 #include "io/available_memory.hpp"
 #include "io/hdf5_support.hpp"
@@ -99,8 +100,10 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
   const MemoryEstimate memory = estimate_memory(config);
+  const std::optional<std::string> advice = small_step_advice(config);
   if (check->parsed()) {
     std::cout << config.to_json().dump(2) << "\n";
+    if (advice) std::cerr << "slidewave: " << config_path << ": " << *advice << "\n";
     std::cerr << "slidewave: memory estimate " << memory.describe() << "\n";
     return kComplete;
   }
@@ -118,6 +121,7 @@ int main(int argc, char** argv) {
   //    into it for minutes and end in std::bad_alloc or the OOM killer. From here on, stderr on a closed
   //    pipe must fail as EPIPE (and be silenced), not kill the run with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
+  if (advice) std::cerr << "slidewave: " << config_path << ": " << *advice << "\n";
   const AvailableMemory available = available_memory();
   std::cerr << "slidewave: memory estimate " << memory.describe() << "; available " << bytes_text(available.bytes)
             << " (" << available.source << ")\n";

@@ -286,3 +286,20 @@ def test_retired_choice_exits_2_saying_what_the_solver_does_instead(solver, tmp_
         assert result.returncode == 2, result.stderr
         assert f"{group}.{key}" in result.stderr and "retired" in result.stderr and instead in result.stderr
     assert files_in(tmp_path) == {"config.json"}
+
+
+@pytest.mark.parametrize("changes, advised", [
+    ({"time": {"dt_times_cs": 0.25}}, True),  # H/32: c_s dt / h = 0.32, where long runs created energy
+    ({}, False),  # the default dt c_s = 0.5 m: 0.64
+    ({"time": {"dt_times_cs": 0.25}, "friction": {"regularization": "prakash_clifton"}}, False),
+    ({"time": {"dt_times_cs": 0.25}, "friction": {"f": 0.0}}, False),
+])
+def test_a_small_courant_number_is_advised_against_not_refused(solver, tmp_path, changes, advised):
+    config = {"mesh": {"elements_per_H": 32}, "output": {"progress": "never"}}
+    for group, values in changes.items():
+        config.setdefault(group, {}).update(values)
+    result = run(solver, "check", write_config(tmp_path, config))
+    assert result.returncode == 0, result.stderr
+    assert ("advice: the time step is small for the mesh (c_s dt / h = 0.32 < 0.5)" in result.stderr) == advised
+    if advised:
+        assert "time.dt_times_cs >= 0.391 m" in result.stderr and "prakash_clifton" in result.stderr
