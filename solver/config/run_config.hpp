@@ -11,7 +11,7 @@
 namespace slidewave {
 
 enum class Integration { full, reduced, reduced_pure };
-enum class MassKind { consistent, lumped };
+enum class MassKind { consistent, lumped, redistributed };
 enum class ContactWeighting { alpha, end };
 enum class Regularization { none, prakash_clifton };
 enum class ProgressMode { automatic, always, never };

@@ -21,7 +21,8 @@ Eigen::Matrix3d plane_strain_elasticity(double E, double nu);
 ///    (1/2) E' (4/3) q^2 with E' = E/(1-nu^2); no volumetric or shear locking.
 Matrix8 quad4_stiffness(double E, double nu, double h, Integration integration);
 
-/// Element mass: consistent (exact integration of N_i N_j) or row-sum lumped.
+/// Element mass: consistent (exact integration of N_i N_j) or row-sum lumped (`redistributed` is consistent here:
+/// fem/mass_redistribution.hpp changes the bottom row of elements).
 Matrix8 quad4_mass(double rho, double h, MassKind kind);
 
 }  // namespace slidewave

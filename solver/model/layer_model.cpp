@@ -8,6 +8,7 @@
 #include "contact/coulomb_friction.hpp"
 #include "contact/delassus.hpp"
 #include "fem/assembly.hpp"
+#include "fem/mass_redistribution.hpp"
 #include "linalg/block_circulant_solver.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/two_solve_split.hpp"
@@ -32,6 +33,14 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   assemble_uniform_rows(mesh, Ke, free, top).swap(K_fd);
   assemble_uniform_rows(mesh, Me, free, top).swap(M_fd);
   assemble_uniform_rows(mesh, Me, top, all).swap(M_top_rows);
+  if (c.mesh.mass == MassKind::redistributed) {
+    const double rho = c.material.rho;
+    redistribute_contact_mass(mesh, rho, M, all, all);
+    redistribute_contact_mass(mesh, rho, M_ff, free, free);
+    redistribute_contact_mass(mesh, rho, M_ff_rows, free, free);
+    redistribute_contact_mass(mesh, rho, M_fd, free, top);
+    redistribute_contact_mass(mesh, rho, M_top_rows, top, all);
+  }
   if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
 }
 

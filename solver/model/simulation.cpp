@@ -146,8 +146,8 @@ void start_substrate(const PreloadState& pre, SubstrateBody& sub, LoopState& loo
 /// free DOF but the contact nodes' normal ones (no gap, no penetration), amplitude relative to the preshear
 /// top displacement, from std::mt19937_64(seed), on top of the single-mode seed if there is one
 /// (model/mode_seed.hpp). The acceleration changes by M_ff da = -(K du)_f, which keeps M a + K u - C^T r,
-/// and with it the HHT step's carried state, as it was; the seed's elastic energy is part of the energy at
-/// the start.
+/// and with it the HHT step's carried state, as it was (with the redistributed mass the contact rows' share goes
+/// into r instead); the seed's elastic energy is part of the energy at the start.
 void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& ledger, const LinearSolver& M_ff,
               LoopState& loop) {
   const auto& c = m.config;
@@ -168,7 +168,19 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
   s.Ku += K_du;
   s.Mu_f += m.M_ff_rows * du.head(n_f);
   s.Ma_f -= K_du.head(n_f);
-  s.acc.head(n_f) += M_ff.solve(Eigen::VectorXd(-K_du.head(n_f)));
+  Eigen::VectorXd da = M_ff.solve(Eigen::VectorXd(-K_du.head(n_f)));
+  if (c.mesh.mass == MassKind::redistributed) {
+    // The contact nodes carry (almost) no inertia (fem/mass_redistribution.hpp): their rows are quasi-static,
+    // so the reaction, not an acceleration, takes the seed's load there: dr with (M_ff^-1 (C^T dr - K du))_c = 0.
+    // (An acceleration would be the load over 1e-6 of a node's mass: a start with kinetic energy from nowhere.)
+    const Eigen::VectorXd dr = delassus_operator_periodic(M_ff, n_c / 2).ldlt().solve(Eigen::VectorXd(-da.head(n_c)));
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(n_f);
+    load.head(n_c) = dr;
+    da += M_ff.solve(load);
+    s.r += dr;
+    s.Ma_f.head(n_c) += dr;
+  }
+  s.acc.head(n_f) += da;
   EnergySums& e = loop.energy;
   e.energy_start += ledger.elastic(s) - elastic_before;
   e.F_top = s.Ku.tail(m.n_top) + m.M_top_rows * s.acc;

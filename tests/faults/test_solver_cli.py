@@ -293,6 +293,7 @@ def test_retired_choice_exits_2_saying_what_the_solver_does_instead(solver, tmp_
     ({}, False),  # the default dt c_s = 0.5 m: 0.64
     ({"time": {"dt_times_cs": 0.25}, "friction": {"regularization": "prakash_clifton"}}, False),
     ({"time": {"dt_times_cs": 0.25}, "friction": {"f": 0.0}}, False),
+    ({"time": {"dt_times_cs": 0.25}, "mesh": {"mass": "redistributed"}}, False),  # what cures it
 ])
 def test_a_small_courant_number_is_advised_against_not_refused(solver, tmp_path, changes, advised):
     config = {"mesh": {"elements_per_H": 32}, "output": {"progress": "never"}}
@@ -303,3 +304,4 @@ def test_a_small_courant_number_is_advised_against_not_refused(solver, tmp_path,
     assert ("advice: the time step is small for the mesh (c_s dt / h = 0.32 < 0.5)" in result.stderr) == advised
     if advised:
         assert "time.dt_times_cs >= 0.391 m" in result.stderr and "prakash_clifton" in result.stderr
+        assert "mesh.mass = \"redistributed\"" in result.stderr
