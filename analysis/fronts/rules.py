@@ -37,7 +37,7 @@ negative when the front slows down (|c| falls), whatever its direction.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -70,6 +70,10 @@ class RuleResult:
     fronts: tuple[EdgeTrack, ...] = field(default=(), repr=False)
     n_counter_fronts: int = 0
     n_secondary_fronts: int = 0
+
+    def undefined(self, reason: str) -> "RuleResult":
+        """The same fit (fronts and window kept, for the diagnostics) with an undefined celerity and `reason`."""
+        return replace(self, celerity=math.nan, reason=reason, deceleration=math.nan)
 
 
 def deceleration(fronts: list[EdgeTrack] | tuple[EdgeTrack, ...], slope: float) -> float:

@@ -18,8 +18,6 @@ the paper and with Adams' theory). The case that made this rule: a run of the ti
 from __future__ import annotations
 
 import math
-from dataclasses import replace
-
 from analysis.fronts.rules import RuleResult
 
 #: |c| dt_out / spacing above this is beyond what the frames can resolve (the Nyquist limit).
@@ -40,4 +38,4 @@ def within_sampling_limit(result: RuleResult, output_interval: float, spacing: f
         return result
     if frame_shift_fraction(result.celerity, output_interval, spacing) <= SAMPLING_LIMIT:
         return result
-    return replace(result, celerity=math.nan, reason=BEYOND_SAMPLING_LIMIT, deceleration=math.nan)
+    return result.undefined(BEYOND_SAMPLING_LIMIT)

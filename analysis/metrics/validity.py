@@ -90,7 +90,7 @@ def without_celerity(result: RuleResult) -> RuleResult:
     celerity undefined with the reason NON_PHYSICAL; a result already undefined keeps its own reason."""
     if result.reason != "ok":
         return result
-    return replace(result, celerity=math.nan, reason=NON_PHYSICAL, deceleration=math.nan)
+    return result.undefined(NON_PHYSICAL)
 
 
 def _first_bad(t: np.ndarray, arrays: list[np.ndarray]) -> float:

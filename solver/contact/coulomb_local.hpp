@@ -40,10 +40,5 @@ struct LocalOperator {
 /// @param fixed_bound  if set, the friction bound while closed is this value instead of f * r_y
 LocalContactSolution solve_local_coulomb(const LocalOperator& A, const Eigen::Vector2d& b, double f,
                                          std::optional<double> fixed_bound = std::nullopt);
-/// The same, factorizing D for this one solve.
-inline LocalContactSolution solve_local_coulomb(const Eigen::Matrix2d& D, const Eigen::Vector2d& b, double f,
-                                                std::optional<double> fixed_bound = std::nullopt) {
-  return solve_local_coulomb(LocalOperator(D), b, f, fixed_bound);
-}
 
 }  // namespace slidewave

@@ -172,7 +172,7 @@ TEST(GaussSeidel, PeriodTwoCycleAtLargeFrictionIsResolvedByTheRelaxedPass) {
     for (int k = 0; k < 2; ++k) {
       const Eigen::Matrix2d D = W.block<2, 2>(2 * k, 2 * k);
       const Eigen::Vector2d b = (q + W * r).segment<2>(2 * k) - D * r.segment<2>(2 * k);
-      r.segment<2>(2 * k) = solve_local_coulomb(D, b, f).r;
+      r.segment<2>(2 * k) = solve_local_coulomb(LocalOperator(D), b, f).r;
     }
     return r;
   };
@@ -209,11 +209,12 @@ TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
   const Eigen::Matrix2d D0 = W.block<2, 2>(0, 0), D1 = W.block<2, 2>(2, 2);
   // No solution with the given bounds: node 0 open leaves it a negative gap; node 0 closed must slip
   // backward at r_x0 = +0.19 (sticking needs r_x0 = 0.75), and then its gap is positive even at r_y0 = 0.
-  const auto node1_open0 = solve_local_coulomb(D1, q.segment<2>(2), f, bounds[1]);
+  const auto node1_open0 = solve_local_coulomb(LocalOperator(D1), q.segment<2>(2), f, bounds[1]);
   const double gap0_open = q(1) + W.block<1, 2>(1, 2).dot(node1_open0.r);
   EXPECT_LT(gap0_open, 0.0);
   const Eigen::Vector2d r0_slip(bounds[0], 0.0);
-  const auto node1_slip0 = solve_local_coulomb(D1, q.segment<2>(2) + W.block<2, 2>(2, 0) * r0_slip, f, bounds[1]);
+  const auto node1_slip0 =
+      solve_local_coulomb(LocalOperator(D1), q.segment<2>(2) + W.block<2, 2>(2, 0) * r0_slip, f, bounds[1]);
   const double gap0_slip = q(1) + W.block<1, 2>(1, 0).dot(r0_slip) + W.block<1, 2>(1, 2).dot(node1_slip0.r);
   EXPECT_GT(gap0_slip, 0.0);
   const double r_x0_stick = -(q(0) + W.block<1, 2>(0, 2).dot(node1_slip0.r)) / D0(0, 0);  // du_x0 = 0

@@ -27,8 +27,8 @@ void expect_solution(const LocalContactSolution& got, ContactState state, const 
 
 TEST(CoulombLocal, OpenWhenTheFreeGapIsNonNegative) {
   for (const Eigen::Matrix2d& D : {diagonal_D(), coupled_D()}) {
-    expect_solution(solve_local_coulomb(D, {0.3, 0.1}, 0.5), ContactState::open, {0, 0});
-    expect_solution(solve_local_coulomb(D, {-0.3, 0.0}, 0.5), ContactState::open, {0, 0});  // grazing
+    expect_solution(solve_local_coulomb(LocalOperator(D), {0.3, 0.1}, 0.5), ContactState::open, {0, 0});
+    expect_solution(solve_local_coulomb(LocalOperator(D), {-0.3, 0.0}, 0.5), ContactState::open, {0, 0});  // grazing
   }
 }
 
@@ -36,15 +36,17 @@ TEST(CoulombLocal, OpenWhenTheFreeGapIsNonNegative) {
 // r_y = -b_y / 3, r_x = -s f r_y, and the slip direction s = sign(du_x) with du_x = b_x + 2 r_x.
 TEST(CoulombLocal, HandBuiltDiagonalCases) {
   const Eigen::Matrix2d D = diagonal_D();
-  expect_solution(solve_local_coulomb(D, {0.1, -0.6}, 0.5), ContactState::stick, {-0.05, 0.2});
-  expect_solution(solve_local_coulomb(D, {0.5, -0.6}, 0.5), ContactState::slip, {-0.1, 0.2});  // du_x = +0.3
-  expect_solution(solve_local_coulomb(D, {-0.5, -0.6}, 0.5), ContactState::slip, {0.1, 0.2});  // du_x = -0.3
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.1, -0.6}, 0.5), ContactState::stick, {-0.05, 0.2});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.5, -0.6}, 0.5), ContactState::slip,
+                  {-0.1, 0.2});  // du_x = +0.3
+  expect_solution(solve_local_coulomb(LocalOperator(D), {-0.5, -0.6}, 0.5), ContactState::slip,
+                  {0.1, 0.2});  // du_x = -0.3
   // On the cone edge |r_x| = f r_y exactly: stick (du_x = 0) is the answer.
-  expect_solution(solve_local_coulomb(D, {0.2, -0.6}, 0.5), ContactState::stick, {-0.1, 0.2});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.2, -0.6}, 0.5), ContactState::stick, {-0.1, 0.2});
   // Frictionless: r_x = 0, pure normal reaction, free tangential motion.
-  expect_solution(solve_local_coulomb(D, {0.4, -0.6}, 0.0), ContactState::slip, {0.0, 0.2});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.4, -0.6}, 0.0), ContactState::slip, {0.0, 0.2});
   // The slip increments come out as predicted.
-  const auto slip = solve_local_coulomb(D, {0.5, -0.6}, 0.5);
+  const auto slip = solve_local_coulomb(LocalOperator(D), {0.5, -0.6}, 0.5);
   const Eigen::Vector2d y = Eigen::Vector2d(0.5, -0.6) + D * slip.r;
   EXPECT_NEAR(y.x(), 0.3, 1e-15);
   EXPECT_NEAR(y.y(), 0.0, 1e-15);
@@ -57,11 +59,13 @@ TEST(CoulombLocal, HandBuiltCoupledCases) {
   const double f = 0.5;
   // stick: r = -D^-1 b = -(1/5.75) (3 b_x - 0.5 b_y, -0.5 b_x + 2 b_y)
   const Eigen::Vector2d b_stick(0.1, -0.6);
-  expect_solution(solve_local_coulomb(D, b_stick, f), ContactState::stick,
+  expect_solution(solve_local_coulomb(LocalOperator(D), b_stick, f), ContactState::stick,
                   Eigen::Vector2d(-(3 * 0.1 + 0.5 * 0.6) / 5.75, -(-0.5 * 0.1 - 2 * 0.6) / 5.75));
   const double ry_forward = 0.6 / (3 - 0.5 * f), ry_backward = 0.6 / (3 + 0.5 * f);
-  expect_solution(solve_local_coulomb(D, {0.5, -0.6}, f), ContactState::slip, {-f * ry_forward, ry_forward});
-  expect_solution(solve_local_coulomb(D, {-0.5, -0.6}, f), ContactState::slip, {f * ry_backward, ry_backward});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.5, -0.6}, f), ContactState::slip,
+                  {-f * ry_forward, ry_forward});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {-0.5, -0.6}, f), ContactState::slip,
+                  {f * ry_backward, ry_backward});
   // directions: du_x = b_x + 2 r_x + 0.5 r_y
   EXPECT_GT(0.5 + 2 * (-f * ry_forward) + 0.5 * ry_forward, 0);
   EXPECT_LT(-0.5 + 2 * (f * ry_backward) + 0.5 * ry_backward, 0);
@@ -72,17 +76,17 @@ TEST(CoulombLocal, FixedBound) {
   const Eigen::Matrix2d D = coupled_D();
   const double bound = 0.05;
   // stick inside the bound: r = -D^-1 b = -(3 b_x - 0.5 b_y, -0.5 b_x + 2 b_y) / 5.75 for b = (-0.08, -0.6)
-  const auto stick = solve_local_coulomb(D, {-0.08, -0.6}, 1.0, bound);
+  const auto stick = solve_local_coulomb(LocalOperator(D), {-0.08, -0.6}, 1.0, bound);
   expect_solution(stick, ContactState::stick,
                   Eigen::Vector2d(-(3 * -0.08 + 0.5 * 0.6), -(-0.5 * -0.08 - 2 * 0.6)) / 5.75);
   EXPECT_LE(std::fabs(stick.r.x()), bound);
   // slip forward: r_x = -bound, u_y = 0 gives r_y = (0.6 + 0.5 bound) / 3
-  expect_solution(solve_local_coulomb(D, {0.5, -0.6}, 1.0, bound), ContactState::slip,
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.5, -0.6}, 1.0, bound), ContactState::slip,
                   {-bound, (0.6 + 0.5 * bound) / 3});
-  expect_solution(solve_local_coulomb(D, {-0.5, -0.6}, 1.0, bound), ContactState::slip,
+  expect_solution(solve_local_coulomb(LocalOperator(D), {-0.5, -0.6}, 1.0, bound), ContactState::slip,
                   {bound, (0.6 - 0.5 * bound) / 3});
   // open is still decided by the free gap
-  expect_solution(solve_local_coulomb(D, {0.5, 0.2}, 1.0, bound), ContactState::open, {0, 0});
+  expect_solution(solve_local_coulomb(LocalOperator(D), {0.5, 0.2}, 1.0, bound), ContactState::open, {0, 0});
 }
 
 // Random SPD D (diagonal and coupled), random b, f in {0, 0.3, 1, 2}: the answer satisfies the
@@ -99,7 +103,7 @@ TEST(CoulombLocal, RandomCasesAgainstConditionsAndEnumeration) {
         Eigen::Matrix2d D = A * A.transpose() + 0.2 * Eigen::Matrix2d::Identity();
         if (!coupled) D(0, 1) = D(1, 0) = 0;
         const Eigen::Vector2d b(uniform(generator), uniform(generator));
-        const auto got = solve_local_coulomb(D, b, f);
+        const auto got = solve_local_coulomb(LocalOperator(D), b, f);
         const std::string where = "f = " + std::to_string(f) + " trial " + std::to_string(trial);
         ASSERT_TRUE(got.consistent) << where;
         const Eigen::MatrixXd W = D;

@@ -88,11 +88,14 @@ WavenumberBlocks::WavenumberBlocks(const LayerModel& model)
   if (n_x % 2 == 0) weight[lanes - 1] = 1.0 / n_x;
 }
 
-BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
+BandedLanes mass_stiffness_band(const WavenumberBlocks& blocks, double mass_factor, double stiffness_factor) {
   BandedLanes A = blocks.K;
-  const double b = hht.mass_factor(), k = 1 - hht.alpha;
-  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = b * blocks.M.a[e] + k * blocks.K.a[e];
+  for (std::size_t e = 0; e < A.a.size(); ++e) A.a[e] = mass_factor * blocks.M.a[e] + stiffness_factor * blocks.K.a[e];
   return A;
+}
+
+BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht) {
+  return mass_stiffness_band(blocks, hht.mass_factor(), 1 - hht.alpha);
 }
 
 }  // namespace slidewave

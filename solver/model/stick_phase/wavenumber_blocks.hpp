@@ -33,6 +33,8 @@ struct WavenumberBlocks {
   std::vector<double> weight;
 };
 
+/// The lanes' mass_factor M_m + stiffness_factor K_m, entry by entry.
+BandedLanes mass_stiffness_band(const WavenumberBlocks& blocks, double mass_factor, double stiffness_factor);
 /// The lanes' effective matrices b M_m + (1 - a) K_m of the HHT step (b = 1 / (beta dt^2)).
 BandedLanes effective_band(const WavenumberBlocks& blocks, const HHTCoefficients& hht);
 

@@ -79,9 +79,7 @@ std::vector<double> lowest_frequencies(const WavenumberBlocks& blocks, const Ban
 std::vector<double> transient_factors(const WavenumberBlocks& blocks, const BandedLaneFactor& K_interior, double dt) {
   constexpr double floor_growth = 6.3, low_frequency_growth = 1.65;
   const double omega_floor = low_frequency_growth / floor_growth * (1 + 1e-9), sigma = std::pow(omega_floor / dt, 2);
-  BandedLanes shifted = blocks.K;
-  for (std::size_t e = 0; e < shifted.a.size(); ++e) shifted.a[e] = blocks.K.a[e] - sigma * blocks.M.a[e];
-  const std::vector<bool> above_floor = positive_definite_lanes(shifted, 2);
+  const std::vector<bool> above_floor = positive_definite_lanes(mass_stiffness_band(blocks, -sigma, 1.0), 2);
   int m_end = blocks.lanes;
   while (m_end > 0 && above_floor[m_end - 1]) --m_end;
   const std::vector<double> omega = lowest_frequencies(blocks, K_interior, dt, m_end);
