@@ -9,11 +9,38 @@
 
 namespace slidewave {
 
+void keep_first_lanes(std::vector<double>& a, std::size_t n_rows, int lanes, int width) {
+  if (width < 0 || width > lanes) throw std::invalid_argument("keep_first_lanes: width outside [0, lanes]");
+  // Row r moves from r lanes to r width <= r lanes: copying the rows in ascending order never overwrites a
+  // value before it is read.
+  for (std::size_t r = 1; r < n_rows; ++r) std::copy_n(a.data() + r * lanes, width, a.data() + r * width);
+  a.resize(n_rows * width);
+}
+
+void LaneVectors::narrow(int width) {
+  keep_first_lanes(re, rows, lanes, width);
+  keep_first_lanes(im, rows, lanes, width);
+  lanes = width;
+}
+
 BandedLanes::BandedLanes(int n_rows, int half_bandwidth, int n_lanes)
     : rows(n_rows),
       p(half_bandwidth),
       lanes(n_lanes),
       a(static_cast<std::size_t>(n_rows) * (2 * half_bandwidth + 1) * n_lanes, 0.0) {}
+
+void BandedLanes::narrow(int width) {
+  keep_first_lanes(a, static_cast<std::size_t>(rows) * (2 * p + 1), lanes, width);
+  lanes = width;
+}
+
+BandedLanes BandedLanes::first_lanes(int width) const {
+  if (width < 0 || width > lanes) throw std::invalid_argument("BandedLanes::first_lanes: width outside [0, lanes]");
+  BandedLanes narrow(rows, p, width);
+  for (std::size_t row = 0; row < static_cast<std::size_t>(rows) * (2 * p + 1); ++row)
+    std::copy_n(a.data() + row * lanes, width, narrow.a.data() + row * width);
+  return narrow;
+}
 
 namespace {
 
@@ -118,6 +145,12 @@ BandedLaneFactor::BandedLaneFactor(const BandedLanes& A, int first)
         L_[(static_cast<std::size_t>(r) * p + k - 1) * lanes_ + m] = band[r * (p + 1) + k];
     }
   }
+}
+
+void BandedLaneFactor::narrow(int width) {
+  keep_first_lanes(L_, static_cast<std::size_t>(n_) * std::max(p_, 1), lanes_, width);
+  keep_first_lanes(inv_D_, static_cast<std::size_t>(n_), lanes_, width);
+  lanes_ = width;
 }
 
 std::vector<bool> positive_definite_lanes(const BandedLanes& A, int first) {

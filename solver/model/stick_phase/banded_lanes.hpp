@@ -10,6 +10,11 @@
 
 namespace slidewave {
 
+/// Keeps the first `width` of the `lanes` values of each of n_rows rows, packed at the new row length, in place
+/// (the storage is not reallocated: no new pages). Retired lanes leave the stepper's arrays this way, so that
+/// the active ones stay contiguous in memory (model/stick_phase/wavenumber_stepper.hpp).
+void keep_first_lanes(std::vector<double>& a, std::size_t n_rows, int lanes, int width);
+
 /// rows x lanes complex values, split into real and imaginary parts, lane fastest.
 struct LaneVectors {
   int rows = 0, lanes = 0;
@@ -23,6 +28,8 @@ struct LaneVectors {
     re[at(r, m)] = z.real();
     im[at(r, m)] = z.imag();
   }
+  /// Keeps lanes [0, width) only (width <= lanes), in place.
+  void narrow(int width);
 };
 
 /// A real symmetric banded matrix per lane, entries (r, r + k) for |k| <= p (zero outside [0, rows)),
@@ -38,6 +45,10 @@ struct BandedLanes {
   /// y(rows [r0, r1)) = A x for lanes [0, m_end) (x and y distinct); with accumulate, y += scale A x.
   void multiply(const LaneVectors& x, LaneVectors& y, int r0, int r1, int m_end, bool accumulate = false,
                 double scale = 1) const;
+  /// Keeps lanes [0, width) only (width <= lanes), in place.
+  void narrow(int width);
+  /// A copy of lanes [0, width).
+  BandedLanes first_lanes(int width) const;
 };
 
 /// L D L^T of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and
@@ -47,8 +58,10 @@ class BandedLaneFactor {
  public:
   BandedLaneFactor() = default;
   BandedLaneFactor(const BandedLanes& A, int first);
-  /// Solves in place on rows [first, rows) of x, lanes [0, m_end).
+  /// Solves in place on rows [first, rows) of x, lanes [0, m_end) (x as narrow as the factor).
   void solve(LaneVectors& x, int m_end) const;
+  /// Keeps lanes [0, width) only (width <= its lanes), in place.
+  void narrow(int width);
 
  private:
   int first_ = 0, n_ = 0, p_ = 0, lanes_ = 0;

@@ -79,7 +79,7 @@ double StickPhase::elastic() const {
 
 void StickPhase::reconstruct(LoopState& loop) const {
   const int n_f = layer_.n_free, n_t = layer_.n_top, n_y = layer_.mesh.n_y;
-  const ModeState& x = stepper_.current();
+  const ModeState x = stepper_.current_in_full();
   HHTState& s = loop.dynamics;
   rebuild_dynamics(layer_, transform_, x, top_after(step_), s);
   s.r = r_;

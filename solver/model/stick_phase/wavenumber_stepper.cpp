@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <utility>
 
 #include "linalg/vector_clones.hpp"
@@ -110,6 +111,7 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
 }
 
 void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {
+  if (K_narrow_.lanes > 0) throw std::logic_error("WavenumberStepper::start: its arrays have narrowed (start once)");
   const int s = blocks_.s, lanes = blocks_.lanes;
   ModeState& x = state_a_;
   transform_state(layer, transform, x);
@@ -134,6 +136,7 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   blocks_.K.multiply(U_static_, KU_static_, 0, s, lanes);
   blocks_.M.multiply(U_static_, MU_static_, 0, s, lanes);
   n_active_ = lanes;
+  width_ = lanes;
   retired_elastic_ = 0;
   u_scale_ = layer.u.head(2 * (s / 2) * blocks_.n_x).lpNorm<Eigen::Infinity>();
   r_scale_ = layer.r.lpNorm<Eigen::Infinity>();
@@ -141,7 +144,8 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
 
 SLIDEWAVE_VECTOR_CLONES
 void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
-  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = blocks_.lanes;
+  // lanes: the row length of every array but R (whose rows hold every lane: r_lanes).
+  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = width_, r_lanes = current_->R.lanes;
   const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
   const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
   const ModeState& x = *current_;
@@ -156,7 +160,7 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
       double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
       for (int m = 0; m < me; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
-      if (r < 2 + blocks_.K.p) {  // the held contact DOFs load the rows within the band of them
+      if (r < 2 + K().p) {  // the held contact DOFs load the rows within the band of them
         const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
         for (int m = 0; m < me; ++m) rhs[m] += load[m];
       }
@@ -184,18 +188,18 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
         v_next[m] = v[m] + dt * (g_old * acc[m] + g * acc_next[m]);
       }
     }
-  blocks_.K.multiply(y.U, y.KU, 0, s, me);
+  K().multiply(y.U, y.KU, 0, s, me);
   for (int r = 0; r < s; ++r) add_to_lane_zero(y.KU, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   // Reactions from the contact rows of the equation of motion.
-  blocks_.M.multiply(y.A, MA_contact_, 0, 2, me);
+  M().multiply(y.A, MA_contact_, 0, 2, me);
   for (int c = 0; c < 2; ++c)
     for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(c) * lanes;
+      const std::size_t e = static_cast<std::size_t>(c) * lanes, e_r = static_cast<std::size_t>(c) * r_lanes;
       const double* Ma_c = (part ? MA_contact_.im : MA_contact_.re).data() + e;
       const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      const double* R = (part ? x.R.im : x.R.re).data() + e;
-      double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e;
+      const double* R = (part ? x.R.im : x.R.re).data() + e_r;
+      double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e_r;
       for (int m = 0; m < me; ++m) R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
     }
   y.v_M_v.assign(lanes, 0.0);
@@ -243,8 +247,9 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       double* __restrict shift = (part ? y.S.im : y.S.re).data() + e;
       for (int m = 0; m < me; ++m) shift[m] = a * (Ku_next[m] - Ku[m]);
       if (r < 2) {
-        const double* R = (part ? x.R.im : x.R.re).data() + e;
-        const double* R_next = (part ? y.R.im : y.R.re).data() + e;
+        const std::size_t e_r = static_cast<std::size_t>(r) * r_lanes;
+        const double* R = (part ? x.R.im : x.R.re).data() + e_r;
+        const double* R_next = (part ? y.R.im : y.R.re).data() + e_r;
         for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
       }
     }
@@ -256,6 +261,56 @@ void WavenumberStepper::commit() {
     retire(n_active_ - 1);
     --n_active_;
   }
+  narrow_to_active();
+}
+
+void WavenumberStepper::narrow_to_active() {
+  constexpr int kLine = 8;  // doubles per 64-byte cache line
+  const int width = std::min(blocks_.lanes, (n_active_ + kLine - 1) / kLine * kLine);
+  if (width > width_ - kLine) return;  // not a whole line of each row to gain
+  for (ModeState* x : {&state_a_, &state_b_})
+    for (LaneVectors* v : {&x->U, &x->V, &x->A, &x->KU, &x->MU, &x->MV, &x->MA, &x->S}) v->narrow(width);
+  hold_load_.narrow(width);
+  MA_contact_.narrow(width);
+  A_eff_interior_.narrow(width);
+  if (K_narrow_.lanes == 0) {
+    K_narrow_ = blocks_.K.first_lanes(width);
+    M_narrow_ = blocks_.M.first_lanes(width);
+  } else {
+    K_narrow_.narrow(width);
+    M_narrow_.narrow(width);
+  }
+  width_ = width;
+}
+
+ModeState WavenumberStepper::current_in_full() const {
+  const ModeState& x = *current_;
+  if (width_ == blocks_.lanes) return x;
+  const int s = blocks_.s;
+  ModeState full(s, blocks_.lanes);
+  const auto copy_active = [&](const LaneVectors& from, LaneVectors& to) {
+    for (int r = 0; r < from.rows; ++r)
+      for (int m = 0; m < width_; ++m) to.set(r, m, from.get(r, m));
+  };
+  copy_active(x.U, full.U);
+  copy_active(x.V, full.V);
+  copy_active(x.A, full.A);
+  copy_active(x.KU, full.KU);
+  copy_active(x.MU, full.MU);
+  copy_active(x.MV, full.MV);
+  copy_active(x.MA, full.MA);
+  copy_active(x.S, full.S);
+  // The lanes beyond the arrays retired before they narrowed: their static states (V, A, S, M V, M A = 0).
+  for (int r = 0; r < s; ++r)
+    for (int m = width_; m < blocks_.lanes; ++m) {
+      full.U.set(r, m, U_static_.get(r, m));
+      full.KU.set(r, m, KU_static_.get(r, m));
+      full.MU.set(r, m, MU_static_.get(r, m));
+    }
+  full.R = x.R;
+  full.v_M_v = x.v_M_v;
+  full.u_K_u = x.u_K_u;
+  return full;
 }
 
 bool WavenumberStepper::may_retire(int m) const {

@@ -11,7 +11,9 @@
 // tends to its static state U* (K_II U*_I = -K_Ic U_c, V = A = 0, R* = (K U*)_c), and HHT's numerical
 // damping takes it there. Once the distance from it cannot change a double of the layer's state or
 // reactions, the wavenumber is retired: set to U* and no longer stepped. Wavenumbers retire from the
-// highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1.
+// highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1, and
+// the step's arrays keep only those (narrowed in place, a cache line of lanes at a time): a row's active lanes
+// stay contiguous, which is what the step's loops stream through (the state in full: current_in_full()).
 #include <Eigen/Dense>
 #include <vector>
 
@@ -72,8 +74,13 @@ class WavenumberStepper {
   /// next() becomes current(); then retires what may be.
   void commit();
 
+  /// The states of the active lanes (rows width() long; the reactions R of every lane).
   const ModeState& current() const { return *current_; }
   const ModeState& next() const { return *next_; }
+  /// current() with every lane, the retired ones at their static states (for the layer's state in full).
+  ModeState current_in_full() const;
+  /// The row length of the step's arrays: n_active() rounded up to a cache line, at most all lanes.
+  int width() const { return width_; }
   int n_active() const { return n_active_; }
   /// 1/2 sum of weight Re(U*^H K U*) over the retired wavenumbers (their constant share of u.K u / 2).
   double retired_elastic() const { return retired_elastic_; }
@@ -84,6 +91,10 @@ class WavenumberStepper {
   /// True if lane m is within the retirement bound of its static state.
   bool may_retire(int m) const;
   void retire(int m);
+  /// Drops the retired lanes beyond the next cache line from the step's arrays.
+  void narrow_to_active();
+  const BandedLanes& K() const { return K_narrow_.lanes > 0 ? K_narrow_ : blocks_.K; }
+  const BandedLanes& M() const { return M_narrow_.lanes > 0 ? M_narrow_ : blocks_.M; }
 
   const WavenumberBlocks& blocks_;
   HHTCoefficients hht_;
@@ -93,8 +104,9 @@ class WavenumberStepper {
   ModeState* current_ = &state_a_;
   ModeState* next_ = &state_b_;
   LaneVectors hold_, hold_load_, MA_contact_;     ///< hold_: U_c
-  LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states (R* = rows 0, 1 of KU*)
-  int n_active_ = 0;
+  LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states of all lanes (R* = rows 0, 1 of KU*)
+  BandedLanes K_narrow_, M_narrow_;               ///< K_m, M_m of the active lanes, once the arrays narrow
+  int n_active_ = 0, width_ = 0;
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
   bool track_shift_ = false;
