@@ -34,10 +34,12 @@ void BandedLanes::narrow(int width) {
   lanes = width;
 }
 
-BandedLanes BandedLanes::first_lanes(int width) const {
+BandedLanes BandedLanes::first_lanes(int width, int n_rows) const {
   if (width < 0 || width > lanes) throw std::invalid_argument("BandedLanes::first_lanes: width outside [0, lanes]");
-  BandedLanes narrow(rows, p, width);
-  for (std::size_t row = 0; row < static_cast<std::size_t>(rows) * (2 * p + 1); ++row)
+  if (n_rows < 0) n_rows = rows;
+  if (n_rows > rows) throw std::invalid_argument("BandedLanes::first_lanes: more rows than it has");
+  BandedLanes narrow(n_rows, p, width);
+  for (std::size_t row = 0; row < static_cast<std::size_t>(n_rows) * (2 * p + 1); ++row)
     std::copy_n(a.data() + row * lanes, width, narrow.a.data() + row * width);
   return narrow;
 }

@@ -47,8 +47,8 @@ struct BandedLanes {
                 double scale = 1) const;
   /// Keeps lanes [0, width) only (width <= lanes), in place.
   void narrow(int width);
-  /// A copy of lanes [0, width).
-  BandedLanes first_lanes(int width) const;
+  /// A copy of lanes [0, width) of rows [0, n_rows) (all rows if n_rows < 0).
+  BandedLanes first_lanes(int width, int n_rows = -1) const;
 };
 
 /// L D L^T of the trailing block of a BandedLanes (rows and columns [first, rows)), lane by lane, and

@@ -3,6 +3,7 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <complex>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
@@ -62,16 +63,22 @@ void RowTransform::forward(const double* x, LaneVectors& X) const {
   }
 }
 
-void RowTransform::inverse(const LaneVectors& X, int n_mesh_rows, double* x) const {
+void RowTransform::inverse(const LaneVectors& X, int n_mesh_rows, double* x, const LaneVectors* beyond) const {
   const int lanes = this->lanes();
+  if (X.lanes > lanes || (X.lanes < lanes && beyond && beyond->lanes != lanes))
+    throw std::invalid_argument("RowTransform::inverse: lanes do not match the transform");
   const double scale = 1.0 / n_x_;
+  const auto value = [&](int r, int m) {
+    return m < X.lanes ? X.get(r, m) : beyond ? beyond->get(r, m) : std::complex<double>(0.0, 0.0);
+  };
   for (int j = 0; j < n_mesh_rows; ++j) {
     // c2r destroys its input: the scratch copy, u_y turned back (i (a + i b) = -b + i a).
-    std::copy_n(X.re.data() + X.at(2 * j, 0), lanes, plans_->re.data());
-    std::copy_n(X.im.data() + X.at(2 * j, 0), lanes, plans_->im.data());
     for (int m = 0; m < lanes; ++m) {
-      plans_->re[lanes + m] = -X.im[X.at(2 * j + 1, m)];
-      plans_->im[lanes + m] = X.re[X.at(2 * j + 1, m)];
+      const std::complex<double> u_x = value(2 * j, m), u_y = value(2 * j + 1, m);
+      plans_->re[m] = u_x.real();
+      plans_->im[m] = u_x.imag();
+      plans_->re[lanes + m] = -u_y.imag();
+      plans_->im[lanes + m] = u_y.real();
     }
     double* row = x + 2 * static_cast<std::size_t>(j) * n_x_;
     fftw_execute_split_dft_c2r(plans_->inverse, plans_->re.data(), plans_->im.data(), row);

@@ -25,8 +25,10 @@ class RowTransform {
   int lanes() const { return n_x_ / 2 + 1; }
   /// X = DFT of x, mesh rows [0, n_rows / 2) (x holds n_rows n_x values).
   void forward(const double* x, LaneVectors& X) const;
-  /// x = inverse DFT of rows [0, 2 n_mesh_rows) of X (x gets 2 n_mesh_rows n_x values).
-  void inverse(const LaneVectors& X, int n_mesh_rows, double* x) const;
+  /// x = inverse DFT of rows [0, 2 n_mesh_rows) of X (x gets 2 n_mesh_rows n_x values). X may hold fewer
+  /// lanes than lanes() (a narrowed array of the stick phase): the others are then read from `beyond`
+  /// (every lane), or are zero if it is null.
+  void inverse(const LaneVectors& X, int n_mesh_rows, double* x, const LaneVectors* beyond = nullptr) const;
 
  private:
   int n_x_;

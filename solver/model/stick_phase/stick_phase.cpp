@@ -47,7 +47,7 @@ bool StickPhase::step(const FrictionBounds& bounds) {
   // The contact rows are held: they move on the first step only (u_y from the preload's round-off to 0),
   // and stay the same bits after it, so their increment is transformed once.
   if (!contact_held_) {
-    transform_.inverse(after.U, 1, u_contact_held_.data());
+    transform_.inverse(after.U, 1, u_contact_held_.data(), &stepper_.static_displacement());
     du_contact_ = u_contact_held_ - u_contact_;
   }
   ledger_.book_step(before, after, stepper_.n_active(), top_after(step_), top_after(step_ + 1), du_contact_, r_,
@@ -79,9 +79,9 @@ double StickPhase::elastic() const {
 
 void StickPhase::reconstruct(LoopState& loop) const {
   const int n_f = layer_.n_free, n_t = layer_.n_top, n_y = layer_.mesh.n_y;
-  const ModeState x = stepper_.current_in_full();
+  const ModeState& x = stepper_.current();
   HHTState& s = loop.dynamics;
-  rebuild_dynamics(layer_, transform_, x, top_after(step_), s);
+  rebuild_dynamics(layer_, transform_, x, top_after(step_), s, &stepper_.static_displacement());
   s.r = r_;
   loop.energy = sums_;
   loop.energy.F_top = s.Ku.tail(n_t) + layer_.M_top_rows * s.acc;

@@ -275,42 +275,13 @@ void WavenumberStepper::narrow_to_active() {
   A_eff_interior_.narrow(width);
   if (K_narrow_.lanes == 0) {
     K_narrow_ = blocks_.K.first_lanes(width);
-    M_narrow_ = blocks_.M.first_lanes(width);
+    // The step multiplies M by a on the contact rows 0, 1 only (their band reaches row 1 + p).
+    M_narrow_ = blocks_.M.first_lanes(width, std::min(blocks_.M.rows, 2 + blocks_.M.p));
   } else {
     K_narrow_.narrow(width);
     M_narrow_.narrow(width);
   }
   width_ = width;
-}
-
-ModeState WavenumberStepper::current_in_full() const {
-  const ModeState& x = *current_;
-  if (width_ == blocks_.lanes) return x;
-  const int s = blocks_.s;
-  ModeState full(s, blocks_.lanes);
-  const auto copy_active = [&](const LaneVectors& from, LaneVectors& to) {
-    for (int r = 0; r < from.rows; ++r)
-      for (int m = 0; m < width_; ++m) to.set(r, m, from.get(r, m));
-  };
-  copy_active(x.U, full.U);
-  copy_active(x.V, full.V);
-  copy_active(x.A, full.A);
-  copy_active(x.KU, full.KU);
-  copy_active(x.MU, full.MU);
-  copy_active(x.MV, full.MV);
-  copy_active(x.MA, full.MA);
-  copy_active(x.S, full.S);
-  // The lanes beyond the arrays retired before they narrowed: their static states (V, A, S, M V, M A = 0).
-  for (int r = 0; r < s; ++r)
-    for (int m = width_; m < blocks_.lanes; ++m) {
-      full.U.set(r, m, U_static_.get(r, m));
-      full.KU.set(r, m, KU_static_.get(r, m));
-      full.MU.set(r, m, MU_static_.get(r, m));
-    }
-  full.R = x.R;
-  full.v_M_v = x.v_M_v;
-  full.u_K_u = x.u_K_u;
-  return full;
 }
 
 bool WavenumberStepper::may_retire(int m) const {
@@ -353,10 +324,10 @@ void transform_state(const HHTState& layer, const RowTransform& transform, ModeS
 }
 
 void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
-                      const Eigen::Vector2d& u_top, HHTState& s) {
+                      const Eigen::Vector2d& u_top, HHTState& s, const LaneVectors* U_beyond) {
   const int n_f = layer.n_free, n_t = layer.n_top, n_y = layer.mesh.n_y;
   s.u.resize(n_f + n_t);
-  transform.inverse(x.U, n_y, s.u.data());
+  transform.inverse(x.U, n_y, s.u.data(), U_beyond);
   s.u.tail(n_t) = layer.top_displacement(u_top.x(), u_top.y());
   s.v = Eigen::VectorXd::Zero(n_f + n_t);
   transform.inverse(x.V, n_y, s.v.data());

@@ -13,7 +13,7 @@
 // reactions, the wavenumber is retired: set to U* and no longer stepped. Wavenumbers retire from the
 // highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1, and
 // the step's arrays keep only those (narrowed in place, a cache line of lanes at a time): a row's active lanes
-// stay contiguous, which is what the step's loops stream through (the state in full: current_in_full()).
+// stay contiguous, which is what the step's loops stream through (the lanes beyond are at their static state).
 #include <Eigen/Dense>
 #include <vector>
 
@@ -54,8 +54,9 @@ void transform_state(const HHTState& layer, const RowTransform& transform, ModeS
 
 /// The layer's u, v, a (its top at u_top = (u_x, u_y) and moving at V0) by the inverse DFT of the lanes' state,
 /// and K u and the mass products by the real-space products (the contact reactions are left to the caller).
+/// Lanes beyond x's arrays (narrowed) are at rest: u from U_beyond (every lane), v = a = 0.
 void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, const ModeState& x,
-                      const Eigen::Vector2d& u_top, HHTState& s);
+                      const Eigen::Vector2d& u_top, HHTState& s, const LaneVectors* U_beyond = nullptr);
 
 class WavenumberStepper {
  public:
@@ -74,11 +75,12 @@ class WavenumberStepper {
   /// next() becomes current(); then retires what may be.
   void commit();
 
-  /// The states of the active lanes (rows width() long; the reactions R of every lane).
+  /// The states of the active lanes (rows width() long; the reactions R of every lane). The lanes beyond
+  /// width() retired before the arrays narrowed: they are at rest at their static displacement (V, A, S = 0).
   const ModeState& current() const { return *current_; }
   const ModeState& next() const { return *next_; }
-  /// current() with every lane, the retired ones at their static states (for the layer's state in full).
-  ModeState current_in_full() const;
+  /// The static displacement U* of every lane.
+  const LaneVectors& static_displacement() const { return U_static_; }
   /// The row length of the step's arrays: n_active() rounded up to a cache line, at most all lanes.
   int width() const { return width_; }
   int n_active() const { return n_active_; }
@@ -105,7 +107,7 @@ class WavenumberStepper {
   ModeState* next_ = &state_b_;
   LaneVectors hold_, hold_load_, MA_contact_;     ///< hold_: U_c
   LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states of all lanes (R* = rows 0, 1 of KU*)
-  BandedLanes K_narrow_, M_narrow_;               ///< K_m, M_m of the active lanes, once the arrays narrow
+  BandedLanes K_narrow_, M_narrow_;  ///< K_m of the active lanes, once the arrays narrow; M_m's contact rows
   int n_active_ = 0, width_ = 0;
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
