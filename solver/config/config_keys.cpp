@@ -173,9 +173,9 @@ std::vector<ConfigKey> make_table() {
              "relative residual of the contact solve (scaled by p0 h)",
              [](auto& c) -> auto& { return c.contact.tolerance; }),
       integer("contact", "max_iterations", 1, 100000000,
-              "Gauss–Seidel sweeps per pass; a pass that misses the tolerance, or settles on a period-2 orbit, "
-              "is followed by one under-relaxed pass (omega 0.5) of as many sweeps, after which the step is "
-              "an error (solver/contact/contact_solver.hpp)",
+              "Gauss–Seidel sweeps per pass; a pass that misses the tolerance, settles on a period-2 orbit or "
+              "stalls (500 sweeps without halving its change) is followed by one under-relaxed pass (omega 0.5) "
+              "of as many sweeps, after which the step is an error (solver/contact/contact_solver.hpp)",
               [](auto& c) -> auto& { return c.contact.max_iterations; }),
       choice("contact", "all_stick", {{"exact", AllStick::exact}},
              "how a step whose nodes all stuck before is solved: first the exact all-stick solution "

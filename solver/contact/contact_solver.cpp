@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "contact/delassus.hpp"
@@ -50,6 +51,9 @@ GaussSeidelReport ContactSolver::sweep_until_converged(const Eigen::VectorXd& q,
   // while still changing by more than the tolerance.
   Eigen::VectorXd r_previous, r_two_back;
   int n_cycle_sweeps = 0;
+  // Stall detection (plain pass): the sweep at which the smallest change last fell below half the one before.
+  double halved_change = std::numeric_limits<double>::infinity();
+  int halved_at = 0;
   while (report.iterations < settings_.max_iterations) {
     ++report.iterations;
     double max_change = 0;
@@ -80,6 +84,11 @@ GaussSeidelReport ContactSolver::sweep_until_converged(const Eigen::VectorXd& q,
       report.converged = true;
       break;
     }
+    if (relaxation == 1 && max_change < 0.5 * halved_change) {
+      halved_change = max_change;
+      halved_at = report.iterations;
+    }
+    if (relaxation == 1 && report.iterations - halved_at >= kStallSweeps) break;
     if (relaxation == 1 && report.iterations >= kCycleWatchFrom) {
       // Back where it was two sweeps ago (to 1e-3 of this sweep's change) on kCycleSweeps sweeps in a
       // row: a period-2 orbit that will never converge, so stop now instead of at max_iterations.
