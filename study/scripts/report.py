@@ -91,9 +91,10 @@ pre { background: #f7f7f7; padding: 0.5em; overflow-x: auto; font-size: 0.85em; 
 
 
 def _number(text: str) -> float:
-    """A CSV cell as float; empty -> nan."""
+    """A CSV cell as float; empty or NA -> nan (Snakemake's benchmark writes NA for what it could not
+    sample, e.g. the memory of a run that ended before its first sample)."""
     text = (text or "").strip()
-    return float(text) if text else math.nan
+    return float(text) if text and text != "NA" else math.nan
 
 
 def read_csv(path: str) -> list[dict]:
