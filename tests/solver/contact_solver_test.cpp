@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdio>
+#include <fstream>
 #include <random>
+#include <string>
 
 #include "contact/contact_solver.hpp"
 #include "contact/coulomb_friction.hpp"
@@ -260,6 +263,44 @@ TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
     EXPECT_NEAR(r(2 * k), 0.0, 1e-10 * r(1));
   }
   EXPECT_EQ(testing::signorini_coulomb_violations(W, q, 1.5, r, 1e-10 * r(1)), "");
+}
+
+// A plain pass that stalls (its change neither shrinks nor repeats) gives up to the under-relaxed fallback
+// after kStallSweeps sweeps without halving its smallest change, not after max_iterations, and the fallback
+// solves the problem: a step of the campaign's run nu 0.49, f 2, H/32 (redistributed mass) whose plain pass
+// stalled, read from tests/solver/data/stalled_contact_h32.txt (W's generating columns, q, the warm start).
+TEST(GaussSeidel, AStalledPlainPassGivesUpToTheFallback) {
+  std::ifstream in(std::string(SLIDEWAVE_SOURCE_DIR) + "/tests/solver/data/stalled_contact_h32.txt");
+  ASSERT_TRUE(in) << "fixture missing";
+  std::string line;
+  while (in.peek() == '#') std::getline(in, line);
+  int rows = 0, plain_sweeps_captured = 0;
+  double f = 0, tolerance = 0, force_scale = 0;
+  in >> rows >> f >> tolerance >> force_scale >> plain_sweeps_captured;
+  Eigen::VectorXd z0(rows), z1(rows), q(rows), r(rows);
+  for (int i = 0; i < rows; ++i) in >> z0(i) >> z1(i) >> q(i) >> r(i);
+  ASSERT_TRUE(in) << "fixture truncated";
+  const Eigen::MatrixXd W = delassus_from_node_responses(z0, z1, rows / 2);
+  const GaussSeidelSettings settings{tolerance, 2000, force_scale};
+  const ContactSolver solver(W, settings, DelassusLayout::block_circulant);
+  CoulombBounds bounds(f);
+  std::vector<ContactState> state;
+  const GaussSeidelReport report = solver.solve(q, bounds, r, state);
+  EXPECT_TRUE(report.converged);
+  EXPECT_EQ(report.relaxation, kFallbackRelaxation);  // the plain pass gave up
+  // It gave up at the stall (sweeps of both passes: 503 plain when captured, then the fallback's), not
+  // after max_iterations = 2000 plain sweeps.
+  EXPECT_GE(report.iterations, kStallSweeps);
+  EXPECT_LT(report.iterations, settings.max_iterations);
+  EXPECT_EQ(testing::signorini_coulomb_violations(W, q, f, r, 1e-8 * force_scale), "");
+  int n_slip = 0, n_open = 0;
+  for (ContactState s : state) {
+    n_slip += s == ContactState::slip;
+    n_open += s == ContactState::open;
+  }
+  EXPECT_GT(n_slip, 0);  // a frictional problem, not a trivial one
+  std::printf("stalled plain pass: %d sweeps in all (%d plain when captured), %d slipping, %d open of %d nodes\n",
+              report.iterations, plain_sweeps_captured, n_slip, n_open, rows / 2);
 }
 
 // The sweeps' updates through W's two generating columns (delassus_periodic_columns) give the result of the
