@@ -9,6 +9,11 @@
 
 namespace slidewave {
 
+namespace {
+
+/// Keeps the first `width` of the `lanes` values of each of n_rows rows, packed at the new row length, in place
+/// (the storage is not reallocated: no new pages). Retired lanes leave the stepper's arrays this way, so that
+/// the active ones stay contiguous in memory (model/stick_phase/wavenumber_stepper.hpp).
 void keep_first_lanes(std::vector<double>& a, std::size_t n_rows, int lanes, int width) {
   if (width < 0 || width > lanes) throw std::invalid_argument("keep_first_lanes: width outside [0, lanes]");
   // Row r moves from r lanes to r width <= r lanes: copying the rows in ascending order never overwrites a
@@ -16,6 +21,8 @@ void keep_first_lanes(std::vector<double>& a, std::size_t n_rows, int lanes, int
   for (std::size_t r = 1; r < n_rows; ++r) std::copy_n(a.data() + r * lanes, width, a.data() + r * width);
   a.resize(n_rows * width);
 }
+
+}  // namespace
 
 void LaneVectors::narrow(int width) {
   keep_first_lanes(re, rows, lanes, width);

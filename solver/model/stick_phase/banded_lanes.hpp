@@ -10,11 +10,6 @@
 
 namespace slidewave {
 
-/// Keeps the first `width` of the `lanes` values of each of n_rows rows, packed at the new row length, in place
-/// (the storage is not reallocated: no new pages). Retired lanes leave the stepper's arrays this way, so that
-/// the active ones stay contiguous in memory (model/stick_phase/wavenumber_stepper.hpp).
-void keep_first_lanes(std::vector<double>& a, std::size_t n_rows, int lanes, int width);
-
 /// rows x lanes complex values, split into real and imaginary parts, lane fastest.
 struct LaneVectors {
   int rows = 0, lanes = 0;

@@ -40,6 +40,8 @@ class StickPhase {
 
   std::int64_t step_count() const { return step_; }
   int n_active() const { return stepper_.n_active(); }
+  /// The row length of the step's arrays (the active wavenumbers rounded up to a cache line).
+  int array_width() const { return stepper_.width(); }
   /// The reactions of the current step (2 per contact node), as the all-stick solution gives them.
   const Eigen::VectorXd& reactions() const { return r_; }
   /// The contact displacements of the current step (2 per contact node; the interface rows need them).
