@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
       config.geometry.lambda_over_H = lambda_over_H;
       const slidewave::LayerModel model(config);
       const slidewave::HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-      const Eigen::SparseMatrix<double> K_eff = slidewave::effective_matrix(hht, model.M_ff, model.K_ff);
+      const Eigen::SparseMatrix<double> K_eff = slidewave::effective_matrix(hht, model.M_ff(), model.K_ff());
       const int n_x = model.mesh.n_x, n_y = model.mesh.n_y, n_free = model.n_free;
 
       // 3. Factorizations.

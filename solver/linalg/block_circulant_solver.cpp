@@ -22,11 +22,7 @@ namespace {
 constexpr double kRelativeTolerance = 1e-12;
 constexpr double kPi = 3.14159265358979323846;
 
-/// The three blocks of slice 0 as dense s x s matrices: B[0] = B_{-1}, B[1] = B_0, B[2] = B_{+1}.
-struct Blocks {
-  Eigen::MatrixXd B[3];
-  int bandwidth = 0;
-};
+using Blocks = CirculantBlocks;
 
 /// max |A_ij| over the stored entries (NaN entries ignored, as std::max ignores them). Four running maxima
 /// over a compressed matrix's values (max is exact in any order), so that the loop is not one chain of
@@ -49,6 +45,28 @@ __attribute__((noinline)) double largest_magnitude(const Eigen::SparseMatrix<dou
       for (long e = A.outerIndexPtr()[k]; e < A.outerIndexPtr()[k] + A.innerNonZeroPtr()[k]; ++e) take(0, e);
   }
   return std::max({largest[0], largest[1], largest[2], largest[3]});
+}
+
+/// An entry (r, c) of block B[b].
+struct Position {
+  int b, r, c;
+};
+
+/// The entries of the blocks above tol in magnitude, block by block, column by column.
+std::vector<Position> significant_entries(const Blocks& blocks, double tol) {
+  const int s = static_cast<int>(blocks.B[1].rows());
+  std::vector<Position> significant;
+  for (int b = 0; b < 3; ++b)
+    for (int c = 0; c < s; ++c)
+      for (int r = 0; r < s; ++r)
+        if (std::fabs(blocks.B[b](r, c)) > tol) significant.push_back({b, r, c});
+  return significant;
+}
+
+int bandwidth(const std::vector<Position>& significant) {
+  int p = 0;
+  for (const Position& q : significant) p = std::max(p, std::abs(q.r - q.c));
+  return p;
 }
 
 /// Empty if A is block-circulant, symmetric and nearest-neighbour (blocks written to *out), else the
@@ -106,14 +124,7 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
     }
 
   // Significant entries of the reference blocks, to find the ones another slice lacks.
-  struct Position {
-    int b, r, c;
-  };
-  std::vector<Position> significant;
-  for (int b = 0; b < 3; ++b)
-    for (int c = 0; c < s; ++c)
-      for (int r = 0; r < s; ++r)
-        if (std::fabs(blocks.B[b](r, c)) > tol) significant.push_back({b, r, c});
+  const std::vector<Position> significant = significant_entries(blocks, tol);
   // A slice has all of them when as many of its entries sit at a significant position (the entries of a
   // column slice have distinct positions (b, r, c)); only a slice that lacks one is searched for which.
   const auto first_lacking = [&](int i) -> const Position* {
@@ -166,9 +177,7 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
       }
     }
 
-  int p = 0;
-  for (const Position& q : significant) p = std::max(p, std::abs(q.r - q.c));
-  blocks.bandwidth = p;
+  blocks.bandwidth = bandwidth(significant);
   if (out) *out = std::move(blocks);
   return {};
 }
@@ -196,7 +205,46 @@ bool BlockCirculantSolver::is_block_circulant(const Eigen::SparseMatrix<double>&
   return why.empty();
 }
 
+namespace {
+
+Blocks checked_blocks(const Eigen::SparseMatrix<double>& A, int n_x, int n_y) {
+  Blocks blocks;
+  const std::string why = find_mismatch(A, n_x, n_y, &blocks);
+  if (!why.empty()) throw std::invalid_argument("BlockCirculantSolver: " + why);
+  return blocks;
+}
+
+}  // namespace
+
+CirculantBlocks circulant_blocks_of_rows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& A, int n_x, int n_y) {
+  const int s = 2 * n_y, n = 2 * n_x * n_y;
+  if (n_x < 3 || n_y < 1 || A.rows() < n || A.cols() < n)
+    throw std::invalid_argument("circulant_blocks_of_rows: need n_x >= 3, n_y >= 1 and 2 n_x n_y rows and columns");
+  // The largest magnitude of the free-free block: the scale of the significance rule of find_mismatch.
+  double scale = 0;
+  for (int row = 0; row < n; ++row)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(A, row); it; ++it)
+      if (it.index() < n) scale = std::max(scale, std::fabs(it.value()));
+  Blocks blocks;
+  for (auto& B : blocks.B) B = Eigen::MatrixXd::Zero(s, s);
+  // Row r of slice i_r (offset o = -i_r from slice 0) holds B_o(r, c) in its columns of slice 0, as
+  // find_mismatch reads them (+= on zero, as there).
+  const std::pair<int, int> row_slices[] = {{n_x - 1, 2}, {0, 1}, {1, 0}};  // (i_r, b)
+  for (const auto& [i_r, b] : row_slices)
+    for (int r = 0; r < s; ++r)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(A, 2 * ((r / 2) * n_x + i_r) + r % 2); it;
+           ++it) {
+        const int col = static_cast<int>(it.index());
+        if (col < n && (col / 2) % n_x == 0) blocks.B[b](r, 2 * ((col / 2) / n_x) + col % 2) += it.value();
+      }
+  blocks.bandwidth = bandwidth(significant_entries(blocks, kRelativeTolerance * scale));
+  return blocks;
+}
+
 BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, int threads)
+    : BlockCirculantSolver(checked_blocks(A, n_x, n_y), n_x, n_y, threads) {}
+
+BlockCirculantSolver::BlockCirculantSolver(const CirculantBlocks& blocks, int n_x, int n_y, int threads)
     : n_x_(n_x),
       n_y_(n_y),
       s_(2 * n_y),
@@ -206,10 +254,10 @@ BlockCirculantSolver::BlockCirculantSolver(const Eigen::SparseMatrix<double>& A,
       threads_(threads) {
   if (threads < 1)
     throw std::invalid_argument("BlockCirculantSolver: threads must be >= 1 (got " + std::to_string(threads) + ")");
-  // 1. Structure and the blocks of slice 0.
-  Blocks blocks;
-  const std::string why = find_mismatch(A, n_x, n_y, &blocks);
-  if (!why.empty()) throw std::invalid_argument("BlockCirculantSolver: " + why);
+  // 1. The blocks of slice 0.
+  if (n_x < 3 || n_y < 1 || blocks.B[1].rows() != 2 * n_y)
+    throw std::invalid_argument("BlockCirculantSolver: blocks of " + std::to_string(blocks.B[1].rows()) +
+                                " rows for n_x = " + std::to_string(n_x) + ", n_y = " + std::to_string(n_y));
   p_ = std::max(blocks.bandwidth, 1);  // p = 0 (diagonal blocks) runs through the same code
   const int s = s_, p = p_, lanes = lanes_;
 

@@ -18,7 +18,9 @@
 // When not to use: a mesh that is not uniform in x, a matrix with couplings beyond the neighbouring
 // column, non-periodic sides, or a matrix that is not SPD. Then use SparseCholesky (the general path and
 // the oracle in the tests). Slices must agree to 1e-12 relative (the check in the constructor); the
-// blocks of slice 0 are the ones factorized.
+// blocks of slice 0 are the ones factorized. The layer's own matrices are block-circulant by construction
+// (fem/assembly.hpp): their blocks are read off the rows of slice 0's neighbourhood of the assembled matrix
+// on all DOFs (circulant_blocks_of_rows), with neither the free-free matrix nor the check.
 //
 // Split solve (linalg/split_solver.hpp), for a step with contact forces on the bottom row (slice rows r = 0,
 // 1, the first 2 n_x DOFs): the response to them is, per wavenumber, G_m = A(theta_m)^{-1} E (E the unit
@@ -50,6 +52,20 @@
 
 namespace slidewave {
 
+/// The blocks of slice 0, dense s x s: B[0] = B_{-1}, B[1] = B_0, B[2] = B_{+1}; and the half-bandwidth of
+/// their entries above 1e-12 times the matrix's largest (what the factors store).
+struct CirculantBlocks {
+  Eigen::MatrixXd B[3];
+  int bandwidth = 0;
+};
+
+/// The blocks of the leading 2 n_x n_y rows and columns (the free DOFs) of a matrix assembled on all DOFs of the
+/// uniform periodic layer (fem/assembly.hpp: row-major, DOF 2 (j n_x + i) + d, the top's DOFs after the free
+/// ones), read off the rows of slices n_x - 1, 0, 1: the entries that the checking constructor reads off the
+/// columns of slice 0 of the free-free block, the same numbers (an entry sums the same one or two element
+/// contributions whichever way it is assembled), and the bandwidth by the same rule. Trusts the structure.
+CirculantBlocks circulant_blocks_of_rows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& A, int n_x, int n_y);
+
 class BlockCirculantSolver : public SplitSolver {
  public:
   /// Checks the structure (std::invalid_argument with the first mismatch if A is not square of size
@@ -58,6 +74,8 @@ class BlockCirculantSolver : public SplitSolver {
   /// @param A full symmetric storage (both triangles), DOF 2 (j n_x + i) + d
   /// @param threads size of the OpenMP team of each solve (>= 1, else std::invalid_argument)
   BlockCirculantSolver(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, int threads = 1);
+  /// Factorizes the matrix of these blocks, whose structure the caller vouches for (circulant_blocks_of_rows).
+  BlockCirculantSolver(const CirculantBlocks& blocks, int n_x, int n_y, int threads = 1);
   ~BlockCirculantSolver();
   BlockCirculantSolver(BlockCirculantSolver&&) noexcept;
   BlockCirculantSolver& operator=(BlockCirculantSolver&&) noexcept;

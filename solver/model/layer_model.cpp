@@ -1,6 +1,7 @@
 #include "model/layer_model.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,11 @@
 
 namespace slidewave {
 
+struct LayerModel::FreeFreeBlocks {
+  std::once_flag assembled;
+  Eigen::SparseMatrix<double> K_ff, M_ff;
+};
+
 LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
   n_free = mesh.n_free();
   n_top = mesh.n_top();
@@ -27,8 +33,6 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   // matrix into fresh memory.
   assemble_uniform_rows(mesh, Ke, all, all).swap(K);
   assemble_uniform_rows(mesh, Me, all, all).swap(M);
-  assemble_uniform_columns(mesh, Ke, free, free).swap(K_ff);
-  assemble_uniform_columns(mesh, Me, free, free).swap(M_ff);
   assemble_uniform_rows(mesh, Me, free, free).swap(M_ff_rows);
   assemble_uniform_rows(mesh, Ke, free, top).swap(K_fd);
   assemble_uniform_rows(mesh, Me, free, top).swap(M_fd);
@@ -36,12 +40,44 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   if (c.mesh.mass == MassKind::redistributed) {
     const double rho = c.material.rho;
     redistribute_contact_mass(mesh, rho, M, all, all);
-    redistribute_contact_mass(mesh, rho, M_ff, free, free);
     redistribute_contact_mass(mesh, rho, M_ff_rows, free, free);
     redistribute_contact_mass(mesh, rho, M_fd, free, top);
     redistribute_contact_mass(mesh, rho, M_top_rows, top, all);
   }
   if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
+  free_free_ = std::make_shared<FreeFreeBlocks>();
+}
+
+namespace {
+
+/// K_ff and M_ff: the element matrices and the redistribution of the constructor.
+void assemble_free_free(const LayerModel& m, Eigen::SparseMatrix<double>& K_ff, Eigen::SparseMatrix<double>& M_ff) {
+  const RunConfig& c = m.config;
+  const DofRange free{0, m.n_free};
+  assemble_uniform_columns(m.mesh, quad4_stiffness(c.material.E, c.material.nu, m.d.h, c.mesh.integration), free, free)
+      .swap(K_ff);
+  assemble_uniform_columns(m.mesh, quad4_mass(c.material.rho, m.d.h, c.mesh.mass), free, free).swap(M_ff);
+  if (c.mesh.mass == MassKind::redistributed) redistribute_contact_mass(m.mesh, c.material.rho, M_ff, free, free);
+}
+
+}  // namespace
+
+const Eigen::SparseMatrix<double>& LayerModel::K_ff() const {
+  std::call_once(free_free_->assembled, [this] { assemble_free_free(*this, free_free_->K_ff, free_free_->M_ff); });
+  return free_free_->K_ff;
+}
+
+const Eigen::SparseMatrix<double>& LayerModel::M_ff() const {
+  K_ff();
+  return free_free_->M_ff;
+}
+
+std::unique_ptr<LinearSolver> LayerModel::factorize(FreeBlock which) const {
+  if (config.numerics.linear_solver != LinearSolverKind::spectral)
+    return factorize(which == FreeBlock::stiffness ? K_ff() : M_ff());
+  return std::make_unique<BlockCirculantSolver>(
+      circulant_blocks_of_rows(which == FreeBlock::stiffness ? K : M, mesh.n_x, mesh.n_y), mesh.n_x, mesh.n_y,
+      config.numerics.threads);
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {
@@ -76,10 +112,10 @@ double sum_every_other(const Eigen::VectorXd& r, int offset) {
 PreloadState solve_preload(const LayerModel& model) {
   const auto& c = model.config;
   const int n_c = model.n_contact_dofs;
-  const auto K_static = model.factorize(model.K_ff);
+  const auto K_static = model.factorize(LayerModel::FreeBlock::stiffness);
   // With a substrate: the pair's static Delassus operator W_L + S W_S S (model/substrate.hpp).
   const LayerModel* sub = model.substrate.get();
-  const auto K_static_sub = sub ? sub->factorize(sub->K_ff) : nullptr;
+  const auto K_static_sub = sub ? sub->factorize(LayerModel::FreeBlock::stiffness) : nullptr;
   const Eigen::MatrixXd W = sub ? pair_delassus(delassus_operator_periodic(*K_static, model.mesh.n_contact()),
                                                 delassus_operator_periodic(*K_static_sub, sub->mesh.n_contact()))
                                 : delassus_operator_periodic(*K_static, model.mesh.n_contact());

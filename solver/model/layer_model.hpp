@@ -21,8 +21,7 @@ struct LayerModel {
   RunConfig config;
   DerivedConstants d;
   LayerMesh mesh;
-  RowSparseMatrix K, M;                    ///< all DOFs
-  Eigen::SparseMatrix<double> K_ff, M_ff;  ///< free-free blocks (to factorize)
+  RowSparseMatrix K, M;  ///< all DOFs
   RowSparseMatrix M_ff_rows, K_fd, M_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
   /// The deformable substrate as a layer in its mirrored frame (model/substrate.hpp); null: the rigid flat.
@@ -32,13 +31,26 @@ struct LayerModel {
   /// the same solution to round-off, and the tests use plain stepping as the phases' oracle.
   bool steps_in_wavenumbers = true;
 
-  /// Factorizes a free-free matrix (K_ff, M_ff, K_eff) with the configured linear solver.
+  /// The free-free blocks in column-major storage (what CHOLMOD factorizes, and the plain step's K_eff), assembled
+  /// on first use: a run on the default path never uses them (factorize(FreeBlock) reads K's and M's rows).
+  const Eigen::SparseMatrix<double>& K_ff() const;
+  const Eigen::SparseMatrix<double>& M_ff() const;
+
+  enum class FreeBlock { stiffness, mass };
+  /// K_ff or M_ff factorized with the configured linear solver; `spectral` from the blocks of K's or M's rows
+  /// (linalg/block_circulant_solver.hpp, circulant_blocks_of_rows), the same factors as from K_ff or M_ff.
+  std::unique_ptr<LinearSolver> factorize(FreeBlock which) const;
+  /// Factorizes a free-free matrix (K_eff, K_ff, M_ff) with the configured linear solver.
   std::unique_ptr<LinearSolver> factorize(const Eigen::SparseMatrix<double>& A) const;
   /// The same as a split solver whose loaded DOFs are the contact DOFs (what the HHT step needs).
   std::unique_ptr<SplitSolver> factorize_split(const Eigen::SparseMatrix<double>& A) const;
 
   /// Top DOF values for shear u_x and compression u_y.
   Eigen::VectorXd top_displacement(double u_x, double u_y) const;
+
+ private:
+  struct FreeFreeBlocks;  ///< K_ff and M_ff once assembled (shared by copies: they never change)
+  std::shared_ptr<FreeFreeBlocks> free_free_;
 };
 
 /// Result of the quasi-static stages (1: compression, 2: shear until T/N = preshear_ratio * f).

@@ -91,9 +91,10 @@ Eigen::VectorXd start_velocity(const LayerModel& m) {
 struct SubstrateBody {
   SubstrateBody(const LayerModel& body, const HHTCoefficients& hht, bool alpha_weighted)
       : model(body),
-        system{body.K, body.K_ff, body.M_ff, body.M_ff_rows, body.K_fd, body.n_free, body.n_top, body.n_contact_dofs},
+        system{body.K,    body.K_ff(), body.M_ff(), body.M_ff_rows,
+               body.K_fd, body.n_free, body.n_top,  body.n_contact_dofs},
         stepper(system, hht, alpha_weighted, body.factorize_split(effective_matrix(hht, system))),
-        M_ff(body.factorize(body.M_ff)),
+        M_ff(body.factorize(LayerModel::FreeBlock::mass)),
         ledger(body, Eigen::VectorXd::Zero(body.n_top)),
         u_bottom(Eigen::VectorXd::Zero(body.n_top)) {}
   /// W_S = w C K_eff,S^-1 C^T in the substrate's frame.
@@ -205,15 +206,16 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   // 2. For a run that steps plainly (model/stick_phase/slip_phase_run.hpp says which do not): the effective
   //    matrix K_eff, factorized once, and the Delassus operator W = w C K_eff^-1 C^T.
   const HHTCoefficients hht(c.time.hht_alpha, m.d.dt);
-  const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c};
   const bool slip_phase = slip_phase_applies(m);
+  std::optional<PartitionedSystem> system;  // the free-free blocks too: built for the plain path only
   std::unique_ptr<HHTStepper> stepper;
   std::unique_ptr<SubstrateBody> sub;
   Eigen::MatrixXd W;
   if (!slip_phase) {
+    system.emplace(PartitionedSystem{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c});
     const bool alpha_weighted = c.time.contact_weighting == ContactWeighting::alpha;
     stepper =
-        std::make_unique<HHTStepper>(system, hht, alpha_weighted, m.factorize_split(effective_matrix(hht, system)));
+        std::make_unique<HHTStepper>(*system, hht, alpha_weighted, m.factorize_split(effective_matrix(hht, *system)));
     W = stepper->contact_weight() * delassus_operator_periodic(stepper->K_eff(), n_c / 2);
     // With a substrate: its own stepper, and the pair's operator W_L + S W_S S (model/substrate.hpp).
     if (m.substrate) {
@@ -226,12 +228,13 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
 
   // 3. The state at t = 0 with the seed, and the output rows at t = 0; or, continuing a run, the state of
   //    its checkpoint (whose rows are already in the output).
-  const auto M_ff = m.factorize(m.M_ff);
+  const auto M_ff = m.factorize(LayerModel::FreeBlock::mass);
   const EnergyLedger ledger(m, start_velocity(m).tail(m.n_top));
-  LoopState loop = start_state(m, pre,
-                               stepper ? stepper->initial_state(pre.u, start_velocity(m), pre.r, *M_ff)
-                                       : hht_initial_state(system, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
-                               *friction, ledger);
+  LoopState loop =
+      start_state(m, pre,
+                  stepper ? stepper->initial_state(pre.u, start_velocity(m), pre.r, *M_ff)
+                          : hht_initial_state(m.M_ff_rows, n_c, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
+                  *friction, ledger);
   add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);
   if (sub) {

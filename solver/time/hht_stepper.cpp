@@ -55,12 +55,13 @@ HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::Vector
                                    const LinearSolver& M_ff) const {
   Eigen::VectorXd Ku(u.size());
   multiply_K(u, Ku);
-  return hht_initial_state(system_, u, v, r, std::move(Ku), M_ff);
+  return hht_initial_state(system_.M_ff_rows, system_.n_contact, u, v, r, std::move(Ku), M_ff);
 }
 
-HHTState hht_initial_state(const PartitionedSystem& system, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& r, Eigen::VectorXd Ku, const LinearSolver& M_ff) {
-  const int n_f = system.n_free, n_c = system.n_contact;
+HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M_ff_rows, int n_contact,
+                           const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
+                           Eigen::VectorXd Ku, const LinearSolver& M_ff) {
+  const int n_f = static_cast<int>(M_ff_rows.rows()), n_c = n_contact;
   HHTState s;
   s.u = u;
   s.v = v;
@@ -70,8 +71,8 @@ HHTState hht_initial_state(const PartitionedSystem& system, const Eigen::VectorX
   rhs.head(n_c) += r;
   s.acc = Eigen::VectorXd::Zero(u.size());
   s.acc.head(n_f) = M_ff.solve(rhs);
-  s.Mu_f = system.M_ff_rows * u.head(n_f);
-  s.Mv_f = system.M_ff_rows * v.head(n_f);
+  s.Mu_f = M_ff_rows * u.head(n_f);
+  s.Mv_f = M_ff_rows * v.head(n_f);
   s.Ma_f = -s.Ku.head(n_f);
   s.Ma_f.head(n_c) += r;
   return s;

@@ -61,8 +61,10 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const P
 
 /// HHTStepper::initial_state with K u given (a run that never steps plainly has no stepper): the state in the
 /// equation of motion, the acceleration from M_ff a_f = C^T r - (K u)_f, the mass products.
-HHTState hht_initial_state(const PartitionedSystem& system, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& r, Eigen::VectorXd Ku, const LinearSolver& M_ff);
+/// M_ff_rows: the free-free mass block, row-major (its rows are the free DOFs); the contact DOFs come first.
+HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M_ff_rows, int n_contact,
+                           const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
+                           Eigen::VectorXd Ku, const LinearSolver& M_ff);
 
 class HHTStepper {
  public:

@@ -29,7 +29,7 @@ Eigen::MatrixXd layer_delassus() {
   const RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", 8}}}});
   const LayerModel model(config);
   const HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-  const auto K_eff = model.factorize(effective_matrix(hht, model.M_ff, model.K_ff));
+  const auto K_eff = model.factorize(effective_matrix(hht, model.M_ff(), model.K_ff()));
   return delassus_operator_periodic(*K_eff, model.n_contact_dofs / 2);
 }
 

@@ -44,11 +44,11 @@ TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
           const Layer l = layer(n_x, n_y, integration, mass);
           ASSERT_EQ(l.model.mesh.n_x, n_x);
           const HHTCoefficients hht(0.1, l.model.d.dt);
-          const Eigen::SparseMatrix<double> K_eff = effective_matrix(hht, l.model.M_ff, l.model.K_ff);
+          const Eigen::SparseMatrix<double> K_eff = effective_matrix(hht, l.model.M_ff(), l.model.K_ff());
           const std::string where = "n_x = " + std::to_string(n_x) + " n_y = " + std::to_string(n_y) + " " +
                                     testing::integration_name(integration) + " " + mass;
           const std::vector<std::pair<const char*, Eigen::SparseMatrix<double>>> matrices = {
-              {"K_eff", K_eff}, {"M_ff", l.model.M_ff}, {"K_ff", l.model.K_ff}};
+              {"K_eff", K_eff}, {"M_ff", l.model.M_ff()}, {"K_ff", l.model.K_ff()}};
           for (const auto& [name, A] : matrices) {
             std::string reason;
             ASSERT_TRUE(BlockCirculantSolver::is_block_circulant(A, n_x, n_y, &reason))
@@ -69,7 +69,7 @@ TEST(BlockCirculantSolver, MatchesCholmodAndDenseOnTheLayerMatrices) {
 
 TEST(BlockCirculantSolver, SolveVariantsAgreeBitwise) {
   const Layer l = layer(6, 4, Integration::reduced, "consistent");
-  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff() + l.model.K_ff();
   const BlockCirculantSolver fft(A, 6, 4);
   const Eigen::VectorXd b = random_vector(fft.size(), 3);
   const Eigen::VectorXd x = fft.solve(b);
@@ -89,6 +89,36 @@ bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
+// The default path factorizes K_ff and M_ff from the blocks read off the rows of K and M (on all DOFs), without
+// assembling K_ff or M_ff: the same factors as the checked constructor makes from those, so the same solution to
+// the bit, for every mass (the redistributed one is not exactly circulant: slice 0's entries are the ones both
+// read), integration, odd and even n_x. Through LayerModel::factorize, which also serves `cholmod` from K_ff, M_ff.
+TEST(BlockCirculantSolver, BlocksReadOffTheRowsOnAllDofsFactorizeToTheSameBits) {
+  for (int n_x : {3, 4, 7})
+    for (int n_y : {2, 3})
+      for (Integration integration : testing::kAllIntegrations)
+        for (const char* mass : {"consistent", "lumped", "redistributed"}) {
+          const Layer l = layer(n_x, n_y, integration, mass);
+          const LayerModel& m = l.model;
+          const std::string where = "n_x = " + std::to_string(n_x) + " n_y = " + std::to_string(n_y) + " " +
+                                    testing::integration_name(integration) + " " + mass;
+          const Eigen::VectorXd b = random_vector(m.n_free, 21);
+          for (const auto& [which, A] : {std::pair{LayerModel::FreeBlock::stiffness, &m.K_ff()},
+                                         std::pair{LayerModel::FreeBlock::mass, &m.M_ff()}}) {
+            const BlockCirculantSolver checked(*A, n_x, n_y);
+            const BlockCirculantSolver of_rows(
+                circulant_blocks_of_rows(which == LayerModel::FreeBlock::stiffness ? m.K : m.M, n_x, n_y), n_x, n_y);
+            EXPECT_EQ(of_rows.bandwidth(), checked.bandwidth()) << where;
+            const Eigen::VectorXd x = checked.solve(b);
+            EXPECT_TRUE(same_bits(of_rows.solve(b), x)) << where;
+            EXPECT_TRUE(same_bits(m.factorize(which)->solve(b), x)) << where;
+          }
+        }
+  const Layer l = layer(5, 3, Integration::reduced, "consistent");
+  EXPECT_THROW(circulant_blocks_of_rows(l.model.K, 5, 5), std::invalid_argument);  // more rows than K has
+  EXPECT_THROW(BlockCirculantSolver(circulant_blocks_of_rows(l.model.K, 5, 3), 5, 2), std::invalid_argument);
+}
+
 // numerics.threads: the FFT rows and the wavenumbers are shared out to the threads, and every row and
 // wavenumber is computed the same way for any count, so x is the same to the bit. n_x = 40 gives 22
 // lanes, split at a multiple of 8 (both threads sweep), and n_y = 5 an uneven split of the rows; the odd
@@ -98,7 +128,7 @@ TEST(BlockCirculantSolver, ThreadCountDoesNotChangeABit) {
     const int n_y = 5;
     const Layer l = layer(n_x, n_y, Integration::reduced, "consistent");
     ASSERT_EQ(l.model.mesh.n_x, n_x);
-    const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+    const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff() + l.model.K_ff();
     BlockCirculantSolver one(A, n_x, n_y, 1);
     const Eigen::VectorXd b = random_vector(one.size(), 11);
     const Eigen::VectorXd g = random_vector(one.n_contact(), 12);
@@ -119,12 +149,12 @@ TEST(BlockCirculantSolver, ThreadCountDoesNotChangeABit) {
     }
   }
   const Layer l = layer(5, 3, Integration::reduced, "consistent");
-  EXPECT_THROW(BlockCirculantSolver(l.model.K_ff, 5, 3, 0), std::invalid_argument);
+  EXPECT_THROW(BlockCirculantSolver(l.model.K_ff(), 5, 3, 0), std::invalid_argument);
 }
 
 TEST(BlockCirculantSolver, RefusesWhatItCannotSolve) {
   const Layer l = layer(5, 3, Integration::reduced, "consistent");
-  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff + l.model.K_ff;
+  const Eigen::SparseMatrix<double> A = 10.0 * l.model.M_ff() + l.model.K_ff();
   std::string reason;
   // Not circulant: one entry of slice 2 differs from slice 0 (symmetrically, so only circulance fails).
   Eigen::SparseMatrix<double> broken = A;

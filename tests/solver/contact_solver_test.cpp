@@ -249,7 +249,7 @@ TEST(GaussSeidel, PrakashCliftonCycleAtGrazingReleasesTheBound) {
 TEST(GaussSeidel, UniformIndentationOfTheLayerDelassus) {
   const RunConfig config = testing::make_config({{"mesh", {{"elements_per_H", 4}}}});
   const LayerModel model(config);
-  const Eigen::MatrixXd W = delassus_operator(SparseCholesky(model.K_ff), model.n_contact_dofs);
+  const Eigen::MatrixXd W = delassus_operator(SparseCholesky(model.K_ff()), model.n_contact_dofs);
   const int n = model.mesh.n_contact();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(2 * n);
   for (int k = 0; k < n; ++k) q(2 * k + 1) = -0.025;
@@ -311,7 +311,7 @@ TEST(GaussSeidel, AStalledPlainPassGivesUpToTheFallback) {
 TEST(GaussSeidel, PeriodicColumnsGiveTheSameSolve) {
   const LayerModel model(
       testing::make_config({{"mesh", {{"elements_per_H", 4}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
-  const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff), model.mesh.n_contact());
+  const Eigen::MatrixXd W = delassus_operator_periodic(SparseCholesky(model.K_ff()), model.mesh.n_contact());
   const int n = model.mesh.n_contact();
   std::mt19937_64 generator(3);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -353,7 +353,8 @@ TEST(GaussSeidel, BlocksBelowRoundOffLeftOutGiveTheSameSolve) {
   const LayerModel model(
       testing::make_config({{"mesh", {{"elements_per_H", 32}}}, {"geometry", {{"lambda_over_H", 6.0}}}}));
   const HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
-  const BlockCirculantSolver K_eff(effective_matrix(hht, model.M_ff, model.K_ff), model.mesh.n_x, model.mesh.n_y, 1);
+  const BlockCirculantSolver K_eff(effective_matrix(hht, model.M_ff(), model.K_ff()), model.mesh.n_x, model.mesh.n_y,
+                                   1);
   const int n = model.mesh.n_contact();
   const Eigen::MatrixXd W = delassus_operator_periodic(K_eff, n);
   const int reach = delassus_periodic_reach(delassus_periodic_columns(W), n, kDelassusRoundOff);

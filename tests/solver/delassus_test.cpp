@@ -29,7 +29,7 @@ Tiny tiny_model(Integration integration, bool dynamic) {
                             {"geometry", {{"lambda_over_H", 5.0 / 3.0}}}});
   LayerModel model(config);
   const HHTCoefficients hht(config.time.hht_alpha, model.d.dt);
-  Eigen::SparseMatrix<double> K_eff = dynamic ? effective_matrix(hht, model.M_ff, model.K_ff) : model.K_ff;
+  Eigen::SparseMatrix<double> K_eff = dynamic ? effective_matrix(hht, model.M_ff(), model.K_ff()) : model.K_ff();
   return {config, std::move(model), std::move(K_eff)};
 }
 

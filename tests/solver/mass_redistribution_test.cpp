@@ -37,7 +37,7 @@ TEST(MassRedistribution, KeepsTheTotalMassAndTakesTheContactNodesInertia) {
             M0(consistent.n_contact_dofs, consistent.n_contact_dofs));  // the row above carries it
   // The blocks the steps use are the same matrix's.
   const int n_f = redistributed.n_free;
-  EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff()) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff_rows) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_fd) - M.topRightCorner(n_f, M.cols() - n_f)).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_top_rows) - M.bottomRows(M.rows() - n_f)).cwiseAbs().maxCoeff(), 0.0);

@@ -34,7 +34,7 @@ LayerModel layer(int n_x, int n_y, Integration integration, const char* mass) {
 
 Eigen::SparseMatrix<double> K_eff_of(const LayerModel& m) {
   const HHTCoefficients hht(m.config.time.hht_alpha, m.d.dt);
-  return effective_matrix(hht, m.M_ff, m.K_ff);
+  return effective_matrix(hht, m.M_ff(), m.K_ff());
 }
 
 TEST(SplitSolve, FreeAndLoadedHalvesMatchCholmod) {
@@ -87,8 +87,8 @@ struct OneStep {
   PreloadState pre;
   explicit OneStep(const LayerModel& model)
       : m(model),
-        system{model.K,    model.K_ff,   model.M_ff,  model.M_ff_rows,
-               model.K_fd, model.n_free, model.n_top, model.n_contact_dofs},
+        system{model.K,    model.K_ff(), model.M_ff(), model.M_ff_rows,
+               model.K_fd, model.n_free, model.n_top,  model.n_contact_dofs},
         hht(model.config.time.hht_alpha, model.d.dt),
         pre(solve_preload(model)) {}
 
@@ -100,7 +100,7 @@ struct OneStep {
     HHTStepper stepper(system, hht, alpha_weighted, std::move(K_eff));
     Eigen::VectorXd v = Eigen::VectorXd::Zero(m.n_free + m.n_top);
     for (int i = 0; i < m.mesh.n_x; ++i) v(m.n_free + 2 * i) = m.d.V0;
-    HHTState s = stepper.initial_state(pre.u, v, pre.r, SparseCholesky(m.M_ff));
+    HHTState s = stepper.initial_state(pre.u, v, pre.r, SparseCholesky(m.M_ff()));
     const int n_c = m.n_contact_dofs;
     const auto u_d = [&](int n) {
       return m.top_displacement(pre.u_x_top + 1e3 * m.d.V0 * (n * hht.dt), m.config.loading.Uy_over_H * m.d.H);
@@ -180,7 +180,7 @@ TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
 
 TEST(SplitSolve, StepperNeedsASplitSolverOnTheContactDofs) {
   const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 4}}}}));
-  const PartitionedSystem system{m.K, m.K_ff, m.M_ff, m.M_ff_rows, m.K_fd, m.n_free, m.n_top, m.n_contact_dofs};
+  const PartitionedSystem system{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows, m.K_fd, m.n_free, m.n_top, m.n_contact_dofs};
   const HHTCoefficients hht(0.1, m.d.dt);
   EXPECT_THROW(HHTStepper(system, hht, true, nullptr), std::invalid_argument);
   PartitionedSystem wrong_contact = system;

@@ -30,7 +30,7 @@ ColumnSpeeds measure_column_speeds(const RunConfig& config) {
   for (int j = 0; j < n_rows; ++j)
     for (int i = 0; i < n_x; ++i)
       for (int d = 0; d < 2; ++d) P(2 * model.mesh.node(i, j) + d, 2 * j + d) = 1;
-  const Eigen::MatrixXd K_P = model.K_ff * P, M_P = model.M_ff * P;
+  const Eigen::MatrixXd K_P = model.K_ff() * P, M_P = model.M_ff() * P;
   const Eigen::MatrixXd K_r = P.transpose() * K_P, M_r = P.transpose() * M_P;
 
   ColumnSpeeds out{};
