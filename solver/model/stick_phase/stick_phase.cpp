@@ -34,12 +34,12 @@ void StickPhase::start(const LoopState& loop) {
   u_contact_held_.resize(u_contact_.size());
   du_contact_.resize(u_contact_.size());
   contact_held_ = false;
+  F_top_ = ledger_.top_force(stepper_.current(), top_after(step_));
 }
 
 bool StickPhase::step(const FrictionBounds& bounds) {
   stepper_.step(top_after(step_ + 1));
-  const ModeState &before = stepper_.current(), &after = stepper_.next();
-  transform_.inverse(after.R, 1, r_trial_.data());
+  transform_.inverse(stepper_.next_reactions(), 1, r_trial_.data());
   for (Eigen::Index k = 0; k < r_trial_.size() / 2; ++k) {  // the test of AllStickSolution::solve
     const double r_x = r_trial_(2 * k), r_y = r_trial_(2 * k + 1);
     if (!(r_y >= 0 && std::fabs(r_x) <= bounds.bound(static_cast<int>(k), r_y))) return false;
@@ -47,12 +47,18 @@ bool StickPhase::step(const FrictionBounds& bounds) {
   // The contact rows are held: they move on the first step only (u_y from the preload's round-off to 0),
   // and stay the same bits after it, so their increment is transformed once.
   if (!contact_held_) {
-    transform_.inverse(after.U, 1, u_contact_held_.data(), &stepper_.static_displacement());
+    transform_.inverse(stepper_.next_displacement(), 1, u_contact_held_.data(), &stepper_.static_displacement());
     du_contact_ = u_contact_held_ - u_contact_;
   }
-  ledger_.book_step(before, after, stepper_.n_active(), top_after(step_), top_after(step_ + 1), du_contact_, r_,
-                    r_trial_, sums_);
-  stepper_.commit();
+  stepper_.advance();
+  const Eigen::Vector2d F_top_next = ledger_.top_force(stepper_.current(), top_after(step_ + 1));
+  if (sums_.hht.on())
+    ledger_.book_step(stepper_.previous(), stepper_.current(), stepper_.n_active(), top_after(step_),
+                      top_after(step_ + 1), du_contact_, r_, r_trial_, sums_);
+  else
+    ledger_.book_work(F_top_, F_top_next, top_after(step_), top_after(step_ + 1), du_contact_, r_, r_trial_, sums_);
+  stepper_.retire_settled();
+  F_top_ = F_top_next;
   ++step_;
   r_ = r_trial_;
   if (!contact_held_) {

@@ -100,10 +100,14 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
       retire_tolerance_(retire_tolerance),
       A_eff_interior_(effective_band(blocks, hht), 2),
       K_interior_(blocks.K, 2),
-      state_a_(blocks.s, blocks.lanes),
-      state_b_(blocks.s, blocks.lanes),
-      hold_load_(blocks.s, blocks.lanes),
+      state_(blocks.s, blocks.lanes),
+      previous_(0, 0),
+      U_next_(blocks.s, blocks.lanes),
+      KU_next_(blocks.s, blocks.lanes),
+      R_next_(2, blocks.lanes),
+      A_contact_(std::min(blocks.s, 2 + blocks.M.p), blocks.lanes),
       MA_contact_(2, blocks.lanes),
+      hold_load_(blocks.s, blocks.lanes),
       U_static_(blocks.s, blocks.lanes),
       KU_static_(blocks.s, blocks.lanes),
       MU_static_(blocks.s, blocks.lanes) {
@@ -113,15 +117,12 @@ WavenumberStepper::WavenumberStepper(const WavenumberBlocks& blocks, const HHTCo
 void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform) {
   if (K_narrow_.lanes > 0) throw std::logic_error("WavenumberStepper::start: its arrays have narrowed (start once)");
   const int s = blocks_.s, lanes = blocks_.lanes;
-  ModeState& x = state_a_;
+  ModeState& x = state_;
   transform_state(layer, transform, x);
   x.v_M_v.clear();  // not made by a step
   x.u_K_u.clear();
   track_shift_ = shift_f != nullptr;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
-  state_b_ = state_a_;
-  current_ = &state_a_;
-  next_ = &state_b_;
   // The held contact DOFs: u_x as at the start, u_y = 0 (what the all-stick solution imposes).
   hold_ = LaneVectors(2, lanes);
   for (int m = 0; m < lanes; ++m) hold_.set(0, m, x.U.get(0, m));
@@ -145,11 +146,9 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
 SLIDEWAVE_VECTOR_CLONES
 void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
   // lanes: the row length of every array but R (whose rows hold every lane: r_lanes).
-  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = width_, r_lanes = current_->R.lanes;
+  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = width_, r_lanes = state_.R.lanes;
   const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
-  const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
-  const ModeState& x = *current_;
-  ModeState& y = *next_;
+  const ModeState& x = state_;
   // The interior right-hand side b M u~ - a K u(n) + the held contact's load, M u~ = M u + dt M v + c M a.
   for (int r = 2; r < s; ++r)
     for (int part = 0; part < 2; ++part) {
@@ -158,7 +157,7 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
       const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      double* __restrict rhs = (part ? y.U.im : y.U.re).data() + e;
+      double* __restrict rhs = (part ? U_next_.im : U_next_.re).data() + e;
       for (int m = 0; m < me; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
       if (r < 2 + K().p) {  // the held contact DOFs load the rows within the band of them
         const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
@@ -166,97 +165,120 @@ void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
       }
     }
   for (int r = 2; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
-    add_to_lane_zero(y.U, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
-  A_eff_interior_.solve(y.U, me);
+    add_to_lane_zero(U_next_, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
+  A_eff_interior_.solve(U_next_, me);
   for (int c = 0; c < 2; ++c) {
-    std::copy_n(hold_.re.data() + hold_.at(c, 0), me, y.U.re.data() + y.U.at(c, 0));
-    std::copy_n(hold_.im.data() + hold_.at(c, 0), me, y.U.im.data() + y.U.at(c, 0));
+    std::copy_n(hold_.re.data() + hold_.at(c, 0), me, U_next_.re.data() + U_next_.at(c, 0));
+    std::copy_n(hold_.im.data() + hold_.at(c, 0), me, U_next_.im.data() + U_next_.at(c, 0));
   }
-  // u~ = u + dt v + c a,  a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)).
-  for (int r = 0; r < s; ++r)
+  u_top_next_ = u_top_next;
+  // a(n+1) = b (u(n+1) - u~) of the rows that the contact rows' mass band reaches (advance() makes the same
+  // numbers on every row), K u(n+1) of the contact rows.
+  for (int r = 0; r < A_contact_.rows; ++r)
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* u_next = (part ? y.U.im : y.U.re).data() + e;
+      const double* u_next = (part ? U_next_.im : U_next_.re).data() + e;
       const double* u = (part ? x.U.im : x.U.re).data() + e;
       const double* acc = (part ? x.A.im : x.A.re).data() + e;
       const double* v = (part ? x.V.im : x.V.re).data() + e;
-      double* __restrict acc_next = (part ? y.A.im : y.A.re).data() + e;
-      double* __restrict v_next = (part ? y.V.im : y.V.re).data() + e;
+      double* __restrict acc_next = (part ? A_contact_.im : A_contact_.re).data() + e;
       for (int m = 0; m < me; ++m) {
         const double u_tilde = u[m] + dt * v[m] + c2 * acc[m];
         acc_next[m] = b * (u_next[m] - u_tilde);
-        v_next[m] = v[m] + dt * (g_old * acc[m] + g * acc_next[m]);
       }
     }
-  K().multiply(y.U, y.KU, 0, s, me);
-  for (int r = 0; r < s; ++r) add_to_lane_zero(y.KU, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next));
+  K().multiply(U_next_, KU_next_, 0, 2, me);
+  for (int r = 0; r < 2; ++r) add_to_lane_zero(KU_next_, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   // Reactions from the contact rows of the equation of motion.
-  M().multiply(y.A, MA_contact_, 0, 2, me);
+  M().multiply(A_contact_, MA_contact_, 0, 2, me);
   for (int c = 0; c < 2; ++c)
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(c) * lanes, e_r = static_cast<std::size_t>(c) * r_lanes;
       const double* Ma_c = (part ? MA_contact_.im : MA_contact_.re).data() + e;
-      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
+      const double* Ku_next = (part ? KU_next_.im : KU_next_.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
       const double* R = (part ? x.R.im : x.R.re).data() + e_r;
-      double* __restrict R_next = (part ? y.R.im : y.R.re).data() + e_r;
+      double* __restrict R_next = (part ? R_next_.im : R_next_.re).data() + e_r;
       for (int m = 0; m < me; ++m) R_next[m] = (Ma_c[m] + (1 - a) * Ku_next[m] + a * Ku[m] - w_previous_ * R[m]) / w_;
     }
-  y.v_M_v.assign(lanes, 0.0);
-  y.u_K_u.assign(lanes, 0.0);
-  double* __restrict v_M_v = y.v_M_v.data();
-  double* __restrict u_K_u = y.u_K_u.data();
-  // The mass products: M a(n+1) of the interior rows from their equation of motion,
+}
+
+SLIDEWAVE_VECTOR_CLONES
+void WavenumberStepper::advance() {
+  if (track_shift_) previous_ = state_;  // the ledger's HHT terms are forms of both states
+  const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = width_, r_lanes = state_.R.lanes;
+  const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
+  const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
+  ModeState& x = state_;
+  // u~ = u + dt v + c a,  a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)), in place.
+  for (int r = 0; r < s; ++r)
+    for (int part = 0; part < 2; ++part) {
+      const std::size_t e = static_cast<std::size_t>(r) * lanes;
+      const double* u_next = (part ? U_next_.im : U_next_.re).data() + e;
+      const double* u = (part ? x.U.im : x.U.re).data() + e;
+      double* __restrict acc = (part ? x.A.im : x.A.re).data() + e;
+      double* __restrict v = (part ? x.V.im : x.V.re).data() + e;
+      for (int m = 0; m < me; ++m) {
+        const double u_tilde = u[m] + dt * v[m] + c2 * acc[m];
+        const double acc_next = b * (u_next[m] - u_tilde);
+        v[m] = v[m] + dt * (g_old * acc[m] + g * acc_next);
+        acc[m] = acc_next;
+      }
+    }
+  K().multiply(U_next_, KU_next_, 2, s, me);
+  for (int r = 2; r < s; ++r) add_to_lane_zero(KU_next_, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
+  x.v_M_v.assign(lanes, 0.0);
+  x.u_K_u.assign(lanes, 0.0);
+  double* __restrict v_M_v = x.v_M_v.data();
+  double* __restrict u_K_u = x.u_K_u.data();
+  // The mass products, in place: M a(n+1) of the interior rows from their equation of motion,
   // -(1-a) K u(n+1) - a K u(n) (K u with the top's share; the top has a = 0), of the contact rows the band
   // product the reactions came from; M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
   for (int r = 0; r < s; ++r)
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
+      const double* Ku_next = (part ? KU_next_.im : KU_next_.re).data() + e;
       const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
-      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
-      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
-      double* __restrict Ma_next = (part ? y.MA.im : y.MA.re).data() + e;
-      double* __restrict Mv_next = (part ? y.MV.im : y.MV.re).data() + e;
-      double* __restrict Mu_next = (part ? y.MU.im : y.MU.re).data() + e;
-      if (r < 2)
-        std::copy_n((part ? MA_contact_.im : MA_contact_.re).data() + e, me, Ma_next);
-      else
-        for (int m = 0; m < me; ++m) Ma_next[m] = -(1 - a) * Ku_next[m] - a * Ku[m];
+      const double* Ma_contact = r < 2 ? (part ? MA_contact_.im : MA_contact_.re).data() + e : nullptr;
+      double* __restrict Mu = (part ? x.MU.im : x.MU.re).data() + e;
+      double* __restrict Mv = (part ? x.MV.im : x.MV.re).data() + e;
+      double* __restrict Ma = (part ? x.MA.im : x.MA.re).data() + e;
       for (int m = 0; m < me; ++m) {
+        const double Ma_next = Ma_contact ? Ma_contact[m] : -(1 - a) * Ku_next[m] - a * Ku[m];
         const double Mu_tilde = Mu[m] + dt * Mv[m] + c2 * Ma[m];
-        Mv_next[m] = Mv[m] + dt * (g_old * Ma[m] + g * Ma_next[m]);
-        Mu_next[m] = Mu_tilde + beta_dt2 * Ma_next[m];
+        Mv[m] = Mv[m] + dt * (g_old * Ma[m] + g * Ma_next);
+        Mu[m] = Mu_tilde + beta_dt2 * Ma_next;
+        Ma[m] = Ma_next;
       }
       // The energies' forms while the row is in cache (the recorder reads them every step).
-      const double* v_next = (part ? y.V.im : y.V.re).data() + e;
-      const double* u_next = (part ? y.U.im : y.U.re).data() + e;
+      const double* v_next = (part ? x.V.im : x.V.re).data() + e;
+      const double* u_next = (part ? U_next_.im : U_next_.re).data() + e;
       for (int m = 0; m < me; ++m) {
-        v_M_v[m] += v_next[m] * Mv_next[m];
+        v_M_v[m] += v_next[m] * Mv[m];
         u_K_u[m] += u_next[m] * Ku_next[m];
       }
     }
-  if (!track_shift_) return;
-  // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
-  for (int r = 0; r < s; ++r)
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* Ku_next = (part ? y.KU.im : y.KU.re).data() + e;
-      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      double* __restrict shift = (part ? y.S.im : y.S.re).data() + e;
-      for (int m = 0; m < me; ++m) shift[m] = a * (Ku_next[m] - Ku[m]);
-      if (r < 2) {
-        const std::size_t e_r = static_cast<std::size_t>(r) * r_lanes;
-        const double* R = (part ? x.R.im : x.R.re).data() + e_r;
-        const double* R_next = (part ? y.R.im : y.R.re).data() + e_r;
-        for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
+  if (track_shift_)  // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
+    for (int r = 0; r < s; ++r)
+      for (int part = 0; part < 2; ++part) {
+        const std::size_t e = static_cast<std::size_t>(r) * lanes;
+        const double* Ku_next = (part ? KU_next_.im : KU_next_.re).data() + e;
+        const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
+        double* __restrict shift = (part ? x.S.im : x.S.re).data() + e;
+        for (int m = 0; m < me; ++m) shift[m] = a * (Ku_next[m] - Ku[m]);
+        if (r < 2) {
+          const std::size_t e_r = static_cast<std::size_t>(r) * r_lanes;
+          const double* R = (part ? x.R.im : x.R.re).data() + e_r;
+          const double* R_next = (part ? R_next_.im : R_next_.re).data() + e_r;
+          for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
+        }
       }
-    }
+  std::swap(x.U, U_next_);
+  std::swap(x.KU, KU_next_);
+  std::swap(x.R, R_next_);
 }
 
-void WavenumberStepper::commit() {
-  std::swap(current_, next_);
+void WavenumberStepper::retire_settled() {
   while (retire_tolerance_ > 0 && n_active_ > 1 && may_retire(n_active_ - 1)) {
     retire(n_active_ - 1);
     --n_active_;
@@ -268,10 +290,9 @@ void WavenumberStepper::narrow_to_active() {
   constexpr int kLine = 8;  // doubles per 64-byte cache line
   const int width = std::min(blocks_.lanes, (n_active_ + kLine - 1) / kLine * kLine);
   if (width > width_ - kLine) return;  // not a whole line of each row to gain
-  for (ModeState* x : {&state_a_, &state_b_})
-    for (LaneVectors* v : {&x->U, &x->V, &x->A, &x->KU, &x->MU, &x->MV, &x->MA, &x->S}) v->narrow(width);
-  hold_load_.narrow(width);
-  MA_contact_.narrow(width);
+  for (LaneVectors* v : {&state_.U, &state_.V, &state_.A, &state_.KU, &state_.MU, &state_.MV, &state_.MA, &state_.S,
+                         &U_next_, &KU_next_, &A_contact_, &MA_contact_, &hold_load_})
+    v->narrow(width);
   A_eff_interior_.narrow(width);
   if (K_narrow_.lanes == 0) {
     K_narrow_ = blocks_.K.first_lanes(width);
@@ -285,7 +306,7 @@ void WavenumberStepper::narrow_to_active() {
 }
 
 bool WavenumberStepper::may_retire(int m) const {
-  const ModeState& x = *current_;
+  const ModeState& x = state_;
   const double dt = hht_.dt;
   const double distance = std::max({max_distance(x.U, &U_static_, m), dt * max_distance(x.V, nullptr, m),
                                     hht_.beta * dt * dt * max_distance(x.A, nullptr, m)});
@@ -298,15 +319,16 @@ bool WavenumberStepper::may_retire(int m) const {
 }
 
 void WavenumberStepper::retire(int m) {
-  for (ModeState* x : {&state_a_, &state_b_}) {
-    for (int r = 0; r < blocks_.s; ++r) {
-      x->U.set(r, m, U_static_.get(r, m));
-      x->KU.set(r, m, KU_static_.get(r, m));
-      x->MU.set(r, m, MU_static_.get(r, m));
-      for (LaneVectors* zero : {&x->V, &x->A, &x->S, &x->MV, &x->MA}) zero->set(r, m, 0.0);
-    }
-    for (int c = 0; c < 2; ++c) x->R.set(c, m, KU_static_.get(c, m));
+  // The buffers that advance() swaps with U, K u and R too: the step no longer writes lane m of either.
+  ModeState& x = state_;
+  for (int r = 0; r < blocks_.s; ++r) {
+    for (LaneVectors* u : {&x.U, &U_next_}) u->set(r, m, U_static_.get(r, m));
+    for (LaneVectors* ku : {&x.KU, &KU_next_}) ku->set(r, m, KU_static_.get(r, m));
+    x.MU.set(r, m, MU_static_.get(r, m));
+    for (LaneVectors* zero : {&x.V, &x.A, &x.S, &x.MV, &x.MA}) zero->set(r, m, 0.0);
   }
+  for (int c = 0; c < 2; ++c)
+    for (LaneVectors* reaction : {&x.R, &R_next_}) reaction->set(c, m, KU_static_.get(c, m));
   double elastic = 0;
   for (int r = 0; r < blocks_.s; ++r) elastic += (std::conj(U_static_.get(r, m)) * KU_static_.get(r, m)).real();
   retired_elastic_ += 0.5 * blocks_.weight[m] * elastic;

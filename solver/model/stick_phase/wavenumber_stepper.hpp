@@ -14,6 +14,9 @@
 // highest down (their lowest frequency grows with m), so the active ones are always m = 0..n_active-1, and
 // the step's arrays keep only those (narrowed in place, a cache line of lanes at a time): a row's active lanes
 // stay contiguous, which is what the step's loops stream through (the lanes beyond are at their static state).
+// One state, updated in place: a step first makes u(n+1) and the reactions only (what the caller tests), and
+// advance() then updates the state row by row where it lies, so that the step streams through one state instead
+// of reading one and writing another (the same operations, the same bits).
 #include <Eigen/Dense>
 #include <vector>
 
@@ -70,15 +73,23 @@ class WavenumberStepper {
   /// The state at t = 0 from the layer's (its free rows and their mass products), with shift_f the ledger's
   /// s (or null); the held contact values U_c = (u_x(0), 0) and the static states.
   void start(const HHTState& layer, const Eigen::VectorXd* shift_f, const RowTransform& transform);
-  /// One step into next() (current() unchanged), the top displaced to u_top_next (one node's x, y).
+  /// The first part of a step, the top displaced to u_top_next (one node's x, y): u(n+1) and the reactions
+  /// R(n+1) into next_displacement() and next_reactions(); current() unchanged.
   void step(const Eigen::Vector2d& u_top_next);
-  /// next() becomes current(); then retires what may be.
-  void commit();
+  /// The rest of the step: current() becomes the state at n+1, in place (previous() keeps the one at n when the
+  /// shift term is booked).
+  void advance();
+  /// Retires what may be (after the caller has read the state advance() made).
+  void retire_settled();
 
-  /// The states of the active lanes (rows width() long; the reactions R of every lane). The lanes beyond
+  /// The state of the active lanes (rows width() long; the reactions R of every lane). The lanes beyond
   /// width() retired before the arrays narrowed: they are at rest at their static displacement (V, A, S = 0).
-  const ModeState& current() const { return *current_; }
-  const ModeState& next() const { return *next_; }
+  const ModeState& current() const { return state_; }
+  /// The state before the last advance(), kept only when the shift term is booked (the ledger's HHT terms).
+  const ModeState& previous() const { return previous_; }
+  /// u(n+1) (rows width() long) and R(n+1) (every lane) of the last step().
+  const LaneVectors& next_displacement() const { return U_next_; }
+  const LaneVectors& next_reactions() const { return R_next_; }
   /// The static displacement U* of every lane.
   const LaneVectors& static_displacement() const { return U_static_; }
   /// The row length of the step's arrays: n_active() rounded up to a cache line, at most all lanes.
@@ -102,12 +113,14 @@ class WavenumberStepper {
   HHTCoefficients hht_;
   double w_, w_previous_, retire_tolerance_;
   BandedLaneFactor A_eff_interior_, K_interior_;
-  ModeState state_a_, state_b_;
-  ModeState* current_ = &state_a_;
-  ModeState* next_ = &state_b_;
-  LaneVectors hold_, hold_load_, MA_contact_;     ///< hold_: U_c
+  ModeState state_, previous_;
+  /// The step's new values until advance(): u(n+1), K u(n+1) (rows 0, 1 by step(), the rest by advance()), R(n+1);
+  /// a(n+1) of the rows that M's contact rows reach, and M a(n+1) of the contact rows.
+  LaneVectors U_next_, KU_next_, R_next_, A_contact_, MA_contact_;
+  LaneVectors hold_, hold_load_;                  ///< hold_: U_c
   LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states of all lanes (R* = rows 0, 1 of KU*)
   BandedLanes K_narrow_, M_narrow_;  ///< K_m of the active lanes, once the arrays narrow; M_m's contact rows
+  Eigen::Vector2d u_top_next_ = Eigen::Vector2d::Zero();  ///< the top of the last step()
   int n_active_ = 0, width_ = 0;
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
