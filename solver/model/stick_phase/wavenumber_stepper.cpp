@@ -210,8 +210,13 @@ void WavenumberStepper::advance() {
   const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
   const double g = hht_.gamma, g_old = 1 - hht_.gamma, beta_dt2 = hht_.beta * dt * dt;
   ModeState& x = state_;
-  // u~ = u + dt v + c a,  a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)), in place.
-  for (int r = 0; r < s; ++r)
+  x.v_M_v.assign(lanes, 0.0);
+  x.u_K_u.assign(lanes, 0.0);
+  double* __restrict v_M_v = x.v_M_v.data();
+  double* __restrict u_K_u = x.u_K_u.data();
+  // Row by row, in place (u(n+1) is whole: K u(n+1) of a row needs its neighbours').
+  for (int r = 0; r < s; ++r) {
+    // u~ = u + dt v + c a,  a(n+1) = b (u(n+1) - u~),  v += dt ((1-gamma) a + gamma a(n+1)).
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
       const double* u_next = (part ? U_next_.im : U_next_.re).data() + e;
@@ -225,16 +230,13 @@ void WavenumberStepper::advance() {
         acc[m] = acc_next;
       }
     }
-  K().multiply(U_next_, KU_next_, 2, s, me);
-  for (int r = 2; r < s; ++r) add_to_lane_zero(KU_next_, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
-  x.v_M_v.assign(lanes, 0.0);
-  x.u_K_u.assign(lanes, 0.0);
-  double* __restrict v_M_v = x.v_M_v.data();
-  double* __restrict u_K_u = x.u_K_u.data();
-  // The mass products, in place: M a(n+1) of the interior rows from their equation of motion,
-  // -(1-a) K u(n+1) - a K u(n) (K u with the top's share; the top has a = 0), of the contact rows the band
-  // product the reactions came from; M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
-  for (int r = 0; r < s; ++r)
+    if (r >= 2) {  // (step() made the contact rows')
+      K().multiply(U_next_, KU_next_, r, r + 1, me);
+      add_to_lane_zero(KU_next_, r, n_x * blocks_.K_fd0.row(r).dot(u_top_next_));
+    }
+    // The mass products: M a(n+1) of the interior rows from their equation of motion, -(1-a) K u(n+1) - a K u(n)
+    // (K u with the top's share; the top has a = 0), of the contact rows the band product the reactions came
+    // from; M v += dt ((1-gamma) M a + gamma M a(n+1)); M u = M u~ + beta dt^2 M a(n+1).
     for (int part = 0; part < 2; ++part) {
       const std::size_t e = static_cast<std::size_t>(r) * lanes;
       const double* Ku_next = (part ? KU_next_.im : KU_next_.re).data() + e;
@@ -250,7 +252,7 @@ void WavenumberStepper::advance() {
         Mu[m] = Mu_tilde + beta_dt2 * Ma_next;
         Ma[m] = Ma_next;
       }
-      // The energies' forms while the row is in cache (the recorder reads them every step).
+      // The energies' forms (the recorder reads them every step).
       const double* v_next = (part ? x.V.im : x.V.re).data() + e;
       const double* u_next = (part ? U_next_.im : U_next_.re).data() + e;
       for (int m = 0; m < me; ++m) {
@@ -258,8 +260,7 @@ void WavenumberStepper::advance() {
         u_K_u[m] += u_next[m] * Ku_next[m];
       }
     }
-  if (track_shift_)  // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
-    for (int r = 0; r < s; ++r)
+    if (track_shift_)  // s(n+1) = a (K u(n+1) - K u(n)) - a' C^T (r(n+1) - r(n)).
       for (int part = 0; part < 2; ++part) {
         const std::size_t e = static_cast<std::size_t>(r) * lanes;
         const double* Ku_next = (part ? KU_next_.im : KU_next_.re).data() + e;
@@ -273,6 +274,7 @@ void WavenumberStepper::advance() {
           for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
         }
       }
+  }
   std::swap(x.U, U_next_);
   std::swap(x.KU, KU_next_);
   std::swap(x.R, R_next_);
