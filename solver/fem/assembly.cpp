@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 namespace slidewave {
@@ -99,6 +100,21 @@ SparseMatrix assemble_uniform_columns(const LayerMesh& mesh, const Matrix8& Ke, 
 
 SparseMatrix assemble_uniform(const LayerMesh& mesh, const Matrix8& Ke) {
   return assemble_uniform_columns(mesh, Ke, {0, mesh.n_dofs()}, {0, mesh.n_dofs()});
+}
+
+Eigen::VectorXd leading_block_product(const RowSparseMatrix& A, Eigen::Index n,
+                                      const Eigen::Ref<const Eigen::VectorXd>& x) {
+  if (n > A.rows() || n > A.cols() || x.size() != n)
+    throw std::invalid_argument("leading_block_product: the block or x does not fit the matrix");
+  Eigen::VectorXd y(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, y(i) (zero) += 1 * tmp
+    for (RowSparseMatrix::InnerIterator it(A, i); it && it.index() < n; ++it) sum += it.value() * x(it.index());
+    double out = 0;
+    out += 1.0 * sum;
+    y(i) = out;
+  }
+  return y;
 }
 
 }  // namespace slidewave

@@ -33,4 +33,11 @@ SparseMatrix assemble_uniform_columns(const LayerMesh& mesh, const Matrix8& elem
 /// All DOFs, column-major.
 SparseMatrix assemble_uniform(const LayerMesh& mesh, const Matrix8& element_matrix);
 
+/// y = A(0:n, 0:n) x, x of size n: the product with the leading n x n block of a row-major A (the free-free
+/// block of a matrix on all DOFs: the free DOFs come first), each row's entries in column order, those of the
+/// columns beyond n skipped; the operations of Eigen's product of that block as a matrix of its own (a sum from
+/// 0 per row, added to a zero), so the same bits as assembling the block and multiplying it.
+Eigen::VectorXd leading_block_product(const RowSparseMatrix& A, Eigen::Index n,
+                                      const Eigen::Ref<const Eigen::VectorXd>& x);
+
 }  // namespace slidewave

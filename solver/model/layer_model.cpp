@@ -20,6 +20,7 @@ namespace slidewave {
 struct LayerModel::FreeFreeBlocks {
   std::once_flag assembled;
   Eigen::SparseMatrix<double> K_ff, M_ff;
+  RowSparseMatrix M_ff_rows;
 };
 
 LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n_x, d.n_y, d.h) {
@@ -33,14 +34,12 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   // matrix into fresh memory.
   assemble_uniform_rows(mesh, Ke, all, all).swap(K);
   assemble_uniform_rows(mesh, Me, all, all).swap(M);
-  assemble_uniform_rows(mesh, Me, free, free).swap(M_ff_rows);
   assemble_uniform_rows(mesh, Ke, free, top).swap(K_fd);
   assemble_uniform_rows(mesh, Me, free, top).swap(M_fd);
   assemble_uniform_rows(mesh, Me, top, all).swap(M_top_rows);
   if (c.mesh.mass == MassKind::redistributed) {
     const double rho = c.material.rho;
     redistribute_contact_mass(mesh, rho, M, all, all);
-    redistribute_contact_mass(mesh, rho, M_ff_rows, free, free);
     redistribute_contact_mass(mesh, rho, M_fd, free, top);
     redistribute_contact_mass(mesh, rho, M_top_rows, top, all);
   }
@@ -50,26 +49,42 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
 
 namespace {
 
-/// K_ff and M_ff: the element matrices and the redistribution of the constructor.
-void assemble_free_free(const LayerModel& m, Eigen::SparseMatrix<double>& K_ff, Eigen::SparseMatrix<double>& M_ff) {
+/// K_ff, M_ff and M_ff_rows: the element matrices and the redistribution of the constructor.
+void assemble_free_free(const LayerModel& m, Eigen::SparseMatrix<double>& K_ff, Eigen::SparseMatrix<double>& M_ff,
+                        RowSparseMatrix& M_ff_rows) {
   const RunConfig& c = m.config;
   const DofRange free{0, m.n_free};
+  const Matrix8 Me = quad4_mass(c.material.rho, m.d.h, c.mesh.mass);
   assemble_uniform_columns(m.mesh, quad4_stiffness(c.material.E, c.material.nu, m.d.h, c.mesh.integration), free, free)
       .swap(K_ff);
-  assemble_uniform_columns(m.mesh, quad4_mass(c.material.rho, m.d.h, c.mesh.mass), free, free).swap(M_ff);
-  if (c.mesh.mass == MassKind::redistributed) redistribute_contact_mass(m.mesh, c.material.rho, M_ff, free, free);
+  assemble_uniform_columns(m.mesh, Me, free, free).swap(M_ff);
+  assemble_uniform_rows(m.mesh, Me, free, free).swap(M_ff_rows);
+  if (c.mesh.mass == MassKind::redistributed) {
+    redistribute_contact_mass(m.mesh, c.material.rho, M_ff, free, free);
+    redistribute_contact_mass(m.mesh, c.material.rho, M_ff_rows, free, free);
+  }
 }
 
 }  // namespace
 
 const Eigen::SparseMatrix<double>& LayerModel::K_ff() const {
-  std::call_once(free_free_->assembled, [this] { assemble_free_free(*this, free_free_->K_ff, free_free_->M_ff); });
-  return free_free_->K_ff;
+  FreeFreeBlocks& f = *free_free_;
+  std::call_once(f.assembled, [this, &f] { assemble_free_free(*this, f.K_ff, f.M_ff, f.M_ff_rows); });
+  return f.K_ff;
 }
 
 const Eigen::SparseMatrix<double>& LayerModel::M_ff() const {
   K_ff();
   return free_free_->M_ff;
+}
+
+const RowSparseMatrix& LayerModel::M_ff_rows() const {
+  K_ff();
+  return free_free_->M_ff_rows;
+}
+
+Eigen::VectorXd LayerModel::free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const {
+  return leading_block_product(M, n_free, x_f);
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(FreeBlock which) const {

@@ -22,7 +22,7 @@ struct LayerModel {
   DerivedConstants d;
   LayerMesh mesh;
   RowSparseMatrix K, M;  ///< all DOFs
-  RowSparseMatrix M_ff_rows, K_fd, M_fd, M_top_rows;
+  RowSparseMatrix K_fd, M_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
   /// The deformable substrate as a layer in its mirrored frame (model/substrate.hpp); null: the rigid flat.
   std::shared_ptr<const LayerModel> substrate;
@@ -32,9 +32,14 @@ struct LayerModel {
   bool steps_in_wavenumbers = true;
 
   /// The free-free blocks in column-major storage (what CHOLMOD factorizes, and the plain step's K_eff), assembled
-  /// on first use: a run on the default path never uses them (factorize(FreeBlock) reads K's and M's rows).
+  /// on first use: a run on the default path never uses them (factorize(FreeBlock) reads K's and M's rows, and
+  /// free_mass_product M's).
   const Eigen::SparseMatrix<double>& K_ff() const;
   const Eigen::SparseMatrix<double>& M_ff() const;
+  /// M_ff in row-major storage (the plain step's products), assembled on first use like K_ff.
+  const RowSparseMatrix& M_ff_rows() const;
+  /// M_ff x_f, from M's rows (fem/assembly.hpp, leading_block_product): the bits of M_ff_rows() x_f.
+  Eigen::VectorXd free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const;
 
   enum class FreeBlock { stiffness, mass };
   /// K_ff or M_ff factorized with the configured linear solver; `spectral` from the blocks of K's or M's rows
@@ -49,7 +54,7 @@ struct LayerModel {
   Eigen::VectorXd top_displacement(double u_x, double u_y) const;
 
  private:
-  struct FreeFreeBlocks;  ///< K_ff and M_ff once assembled (shared by copies: they never change)
+  struct FreeFreeBlocks;  ///< K_ff, M_ff, M_ff_rows once assembled (shared by copies: they never change)
   std::shared_ptr<FreeFreeBlocks> free_free_;
 };
 

@@ -91,7 +91,7 @@ Eigen::VectorXd start_velocity(const LayerModel& m) {
 struct SubstrateBody {
   SubstrateBody(const LayerModel& body, const HHTCoefficients& hht, bool alpha_weighted)
       : model(body),
-        system{body.K,    body.K_ff(), body.M_ff(), body.M_ff_rows,
+        system{body.K,    body.K_ff(), body.M_ff(), body.M_ff_rows(),
                body.K_fd, body.n_free, body.n_top,  body.n_contact_dofs},
         stepper(system, hht, alpha_weighted, body.factorize_split(effective_matrix(hht, system))),
         M_ff(body.factorize(LayerModel::FreeBlock::mass)),
@@ -167,7 +167,7 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
   const Eigen::VectorXd K_du = m.K * du;
   s.u += du;
   s.Ku += K_du;
-  s.Mu_f += m.M_ff_rows * du.head(n_f);
+  s.Mu_f += m.free_mass_product(du.head(n_f));
   s.Ma_f -= K_du.head(n_f);
   Eigen::VectorXd da = M_ff.solve(Eigen::VectorXd(-K_du.head(n_f)));
   if (c.mesh.mass == MassKind::redistributed) {
@@ -212,7 +212,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   std::unique_ptr<SubstrateBody> sub;
   Eigen::MatrixXd W;
   if (!slip_phase) {
-    system.emplace(PartitionedSystem{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows, m.K_fd, m.n_free, m.n_top, n_c});
+    system.emplace(PartitionedSystem{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows(), m.K_fd, m.n_free, m.n_top, n_c});
     const bool alpha_weighted = c.time.contact_weighting == ContactWeighting::alpha;
     stepper =
         std::make_unique<HHTStepper>(*system, hht, alpha_weighted, m.factorize_split(effective_matrix(hht, *system)));
@@ -233,7 +233,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   LoopState loop =
       start_state(m, pre,
                   stepper ? stepper->initial_state(pre.u, start_velocity(m), pre.r, *M_ff)
-                          : hht_initial_state(m.M_ff_rows, n_c, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
+                          : hht_initial_state(m.M, m.n_free, n_c, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
                   *friction, ledger);
   add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);

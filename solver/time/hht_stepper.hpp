@@ -61,8 +61,9 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const P
 
 /// HHTStepper::initial_state with K u given (a run that never steps plainly has no stepper): the state in the
 /// equation of motion, the acceleration from M_ff a_f = C^T r - (K u)_f, the mass products.
-/// M_ff_rows: the free-free mass block, row-major (its rows are the free DOFs); the contact DOFs come first.
-HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M_ff_rows, int n_contact,
+/// M: a row-major mass matrix whose leading n_free rows and columns are M_ff (M_ff itself, or M on all DOFs:
+/// the products skip the columns beyond n_free, fem/assembly.hpp leading_block_product); the contact DOFs first.
+HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M, int n_free, int n_contact,
                            const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
                            Eigen::VectorXd Ku, const LinearSolver& M_ff);
 

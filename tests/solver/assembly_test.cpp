@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Sparse>
+#include <cstring>
+#include <stdexcept>
 #include <vector>
 
 #include "fem/assembly.hpp"
@@ -78,6 +80,34 @@ TEST(Assembly, ColumnsAreNotTheTransposedRows) {
   expect_blocks_of_triplet_assembly(mesh, Ke);
   const SparseMatrix columns = assemble_uniform(mesh, Ke);
   EXPECT_NE(SparseMatrix(columns.transpose()).coeff(0, 2), columns.coeff(0, 2));
+}
+
+// The default path multiplies M_ff by the leading block of M (all DOFs) instead of assembling M_ff: the bits of
+// the assembled block's product, for the stiffness and both masses (rows next to the top have entries to skip),
+// on vectors with values of every sign and size (and zeros, whose sign a sum from 0 keeps as Eigen's does).
+TEST(Assembly, LeadingBlockProductIsTheBlocksProductBitForBit) {
+  for (const LayerMesh& mesh : {LayerMesh(3, 1, 0.5), LayerMesh(7, 5, 0.8)}) {
+    const DofRange all{0, mesh.n_dofs()}, free{0, mesh.n_free()};
+    for (const Matrix8& Ke :
+         {quad4_stiffness(1000.0, 0.3, mesh.h, Integration::full), quad4_mass(2.5, mesh.h, MassKind::consistent),
+          quad4_mass(2.5, mesh.h, MassKind::lumped)}) {
+      const RowSparseMatrix A = assemble_uniform_rows(mesh, Ke, all, all);
+      const RowSparseMatrix block = assemble_uniform_rows(mesh, Ke, free, free);
+      for (int seed : {1, 2}) {
+        Eigen::VectorXd x = testing::random_vector(mesh.n_free(), seed);
+        for (Eigen::Index k = 0; k < x.size(); k += 5) x(k) *= 1e-30;
+        if (seed == 2) x.setZero();
+        const Eigen::VectorXd expected = block * x, actual = leading_block_product(A, mesh.n_free(), x);
+        ASSERT_EQ(actual.size(), expected.size());
+        EXPECT_EQ(std::memcmp(actual.data(), expected.data(), sizeof(double) * actual.size()), 0);
+      }
+    }
+  }
+  const LayerMesh mesh(3, 1, 0.5);
+  const RowSparseMatrix A = assemble_uniform_rows(mesh, quad4_mass(2.5, mesh.h, MassKind::consistent),
+                                                  {0, mesh.n_dofs()}, {0, mesh.n_dofs()});
+  EXPECT_THROW(leading_block_product(A, mesh.n_free(), Eigen::VectorXd::Zero(mesh.n_free() + 1)),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -38,7 +38,9 @@ TEST(MassRedistribution, KeepsTheTotalMassAndTakesTheContactNodesInertia) {
   // The blocks the steps use are the same matrix's.
   const int n_f = redistributed.n_free;
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff()) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff_rows) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((Eigen::MatrixXd(redistributed.M_ff_rows()) - M.topLeftCorner(n_f, n_f)).cwiseAbs().maxCoeff(), 0.0);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n_f, -1.0, 2.0);  // M_ff x from M's rows, the same bits
+  EXPECT_EQ(redistributed.free_mass_product(x), Eigen::VectorXd(redistributed.M_ff_rows() * x));
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_fd) - M.topRightCorner(n_f, M.cols() - n_f)).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ((Eigen::MatrixXd(redistributed.M_top_rows) - M.bottomRows(M.rows() - n_f)).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(M.topLeftCorner(n_f, n_f)).info(), Eigen::Success);

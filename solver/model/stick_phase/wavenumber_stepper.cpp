@@ -359,9 +359,9 @@ void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, co
   s.acc = Eigen::VectorXd::Zero(n_f + n_t);
   transform.inverse(x.A, n_y, s.acc.data());
   s.Ku = layer.K * s.u;
-  s.Mu_f = layer.M_ff_rows * s.u.head(n_f);
-  s.Mv_f = layer.M_ff_rows * s.v.head(n_f);
-  s.Ma_f = layer.M_ff_rows * s.acc.head(n_f);
+  s.Mu_f = layer.free_mass_product(s.u.head(n_f));
+  s.Mv_f = layer.free_mass_product(s.v.head(n_f));
+  s.Ma_f = layer.free_mass_product(s.acc.head(n_f));
 }
 
 }  // namespace slidewave
