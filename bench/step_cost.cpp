@@ -44,8 +44,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// Median-free simple estimate: average wall time of repeated solves with the K_eff factor.
 double one_solve_seconds(const slidewave::LayerModel& model) {
   const slidewave::HHTCoefficients hht(model.config.time.hht_alpha, model.d.dt);
-  const slidewave::PartitionedSystem system{model.K,    model.K_ff(), model.M_ff(), model.M_ff_rows(),
-                                            model.K_fd, model.n_free, model.n_top,  model.n_contact_dofs};
+  const slidewave::PartitionedSystem system = model.partitioned();
   const auto factor = model.factorize(slidewave::effective_matrix(hht, system));
   Eigen::VectorXd b = Eigen::VectorXd::Ones(model.n_free), x(model.n_free);
   const int repeats = 200;

@@ -108,11 +108,9 @@ Eigen::VectorXd leading_block_product(const RowSparseMatrix& A, Eigen::Index n,
     throw std::invalid_argument("leading_block_product: the block or x does not fit the matrix");
   Eigen::VectorXd y(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, y(i) (zero) += 1 * tmp
+    double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, then y(i) = 0 + 1 tmp
     for (RowSparseMatrix::InnerIterator it(A, i); it && it.index() < n; ++it) sum += it.value() * x(it.index());
-    double out = 0;
-    out += 1.0 * sum;
-    y(i) = out;
+    y(i) = 0.0 + sum;  // (1 tmp is tmp; 0 + keeps Eigen's +0 for a -0 sum)
   }
   return y;
 }

@@ -22,8 +22,6 @@ namespace {
 constexpr double kRelativeTolerance = 1e-12;
 constexpr double kPi = 3.14159265358979323846;
 
-using Blocks = CirculantBlocks;
-
 /// max |A_ij| over the stored entries (NaN entries ignored, as std::max ignores them). Four running maxima
 /// over a compressed matrix's values (max is exact in any order), so that the loop is not one chain of
 /// dependent maxsd: the matrices have millions of entries.
@@ -53,7 +51,7 @@ struct Position {
 };
 
 /// The entries of the blocks above tol in magnitude, block by block, column by column.
-std::vector<Position> significant_entries(const Blocks& blocks, double tol) {
+std::vector<Position> significant_entries(const CirculantBlocks& blocks, double tol) {
   const int s = static_cast<int>(blocks.B[1].rows());
   std::vector<Position> significant;
   for (int b = 0; b < 3; ++b)
@@ -73,7 +71,7 @@ int bandwidth(const std::vector<Position>& significant) {
 /// first mismatch. Entries are compared to kRelativeTolerance * max |A_ij|; a structural zero in one
 /// slice counts as 0 against the other slices. A is column-major: the columns of slice i_c are visited
 /// slice by slice, so an entry of slice 0 that a later slice lacks is caught by a visit stamp.
-std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, Blocks* out) {
+std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y, CirculantBlocks* out) {
   std::ostringstream why;
   why.precision(17);
   if (n_x < 3 || n_y < 1) {
@@ -101,7 +99,7 @@ std::string find_mismatch(const Eigen::SparseMatrix<double>& A, int n_x, int n_y
   const auto local_of = [&local](int dof) { return local[dof]; };
   const auto column = [n_x](int i, int c) { return 2 * ((c / 2) * n_x + i) + c % 2; };
 
-  Blocks blocks;
+  CirculantBlocks blocks;
   for (auto& B : blocks.B) B = Eigen::MatrixXd::Zero(s, s);
   // Row slice i_r of an entry in column slice i_c: offset o = i_c - i_r, modulo n_x, in {-1, 0, +1}
   // selects B_o (n_x >= 3, so the three offsets are distinct).
@@ -207,8 +205,8 @@ bool BlockCirculantSolver::is_block_circulant(const Eigen::SparseMatrix<double>&
 
 namespace {
 
-Blocks checked_blocks(const Eigen::SparseMatrix<double>& A, int n_x, int n_y) {
-  Blocks blocks;
+CirculantBlocks checked_blocks(const Eigen::SparseMatrix<double>& A, int n_x, int n_y) {
+  CirculantBlocks blocks;
   const std::string why = find_mismatch(A, n_x, n_y, &blocks);
   if (!why.empty()) throw std::invalid_argument("BlockCirculantSolver: " + why);
   return blocks;
@@ -225,7 +223,7 @@ CirculantBlocks circulant_blocks_of_rows(const Eigen::SparseMatrix<double, Eigen
   for (int row = 0; row < n; ++row)
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(A, row); it; ++it)
       if (it.index() < n) scale = std::max(scale, std::fabs(it.value()));
-  Blocks blocks;
+  CirculantBlocks blocks;
   for (auto& B : blocks.B) B = Eigen::MatrixXd::Zero(s, s);
   // Row r of slice i_r (offset o = -i_r from slice 0) holds B_o(r, c) in its columns of slice 0, as
   // find_mismatch reads them (+= on zero, as there).

@@ -83,6 +83,10 @@ const RowSparseMatrix& LayerModel::M_ff_rows() const {
   return free_free_->M_ff_rows;
 }
 
+PartitionedSystem LayerModel::partitioned() const {
+  return {K, K_ff(), M_ff(), M_ff_rows(), K_fd, n_free, n_top, n_contact_dofs};
+}
+
 Eigen::VectorXd LayerModel::free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const {
   return leading_block_product(M, n_free, x_f);
 }

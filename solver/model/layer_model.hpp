@@ -12,6 +12,7 @@
 #include "linalg/linear_solver.hpp"
 #include "linalg/split_solver.hpp"
 #include "mesh/layer_mesh.hpp"
+#include "time/hht_stepper.hpp"
 
 namespace slidewave {
 
@@ -38,6 +39,8 @@ struct LayerModel {
   const Eigen::SparseMatrix<double>& M_ff() const;
   /// M_ff in row-major storage (the plain step's products), assembled on first use like K_ff.
   const RowSparseMatrix& M_ff_rows() const;
+  /// The blocks the plain HHT step works on (time/hht_stepper.hpp; assembles the free-free ones).
+  PartitionedSystem partitioned() const;
   /// M_ff x_f, from M's rows (fem/assembly.hpp, leading_block_product): the bits of M_ff_rows() x_f.
   Eigen::VectorXd free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const;
 

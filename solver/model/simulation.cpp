@@ -91,8 +91,7 @@ Eigen::VectorXd start_velocity(const LayerModel& m) {
 struct SubstrateBody {
   SubstrateBody(const LayerModel& body, const HHTCoefficients& hht, bool alpha_weighted)
       : model(body),
-        system{body.K,    body.K_ff(), body.M_ff(), body.M_ff_rows(),
-               body.K_fd, body.n_free, body.n_top,  body.n_contact_dofs},
+        system(body.partitioned()),
         stepper(system, hht, alpha_weighted, body.factorize_split(effective_matrix(hht, system))),
         M_ff(body.factorize(LayerModel::FreeBlock::mass)),
         ledger(body, Eigen::VectorXd::Zero(body.n_top)),
@@ -212,7 +211,7 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   std::unique_ptr<SubstrateBody> sub;
   Eigen::MatrixXd W;
   if (!slip_phase) {
-    system.emplace(PartitionedSystem{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows(), m.K_fd, m.n_free, m.n_top, n_c});
+    system.emplace(m.partitioned());
     const bool alpha_weighted = c.time.contact_weighting == ContactWeighting::alpha;
     stepper =
         std::make_unique<HHTStepper>(*system, hht, alpha_weighted, m.factorize_split(effective_matrix(hht, *system)));

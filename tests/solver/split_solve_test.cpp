@@ -87,8 +87,7 @@ struct OneStep {
   PreloadState pre;
   explicit OneStep(const LayerModel& model)
       : m(model),
-        system{model.K,    model.K_ff(), model.M_ff(), model.M_ff_rows(),
-               model.K_fd, model.n_free, model.n_top,  model.n_contact_dofs},
+        system(model.partitioned()),
         hht(model.config.time.hht_alpha, model.d.dt),
         pre(solve_preload(model)) {}
 
@@ -180,7 +179,7 @@ TEST(SplitSolve, PredictorFusedIntoTheCorrectionIsBitwiseTheSame) {
 
 TEST(SplitSolve, StepperNeedsASplitSolverOnTheContactDofs) {
   const LayerModel m(testing::make_config({{"mesh", {{"elements_per_H", 4}}}}));
-  const PartitionedSystem system{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows(), m.K_fd, m.n_free, m.n_top, m.n_contact_dofs};
+  const PartitionedSystem system = m.partitioned();
   const HHTCoefficients hht(0.1, m.d.dt);
   EXPECT_THROW(HHTStepper(system, hht, true, nullptr), std::invalid_argument);
   PartitionedSystem wrong_contact = system;

@@ -174,7 +174,7 @@ TEST(StencilProduct, TheStepperUsesItOnTheLayerAndKeepsEigensBits) {
     const LayerModel m(
         testing::make_config({{"mesh", {{"elements_per_H", 8}}}, {"numerics", {{"linear_solver", solver}}}}));
     const HHTCoefficients hht(m.config.time.hht_alpha, m.d.dt);
-    const PartitionedSystem system{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows(), m.K_fd, m.n_free, m.n_top, m.n_contact_dofs};
+    const PartitionedSystem system = m.partitioned();
     const HHTStepper stepper(system, hht, true, m.factorize_split(effective_matrix(hht, system)));
     EXPECT_TRUE(stepper.uses_stencil_product()) << solver;
     const Eigen::VectorXd u = random_field(m.n_free + m.n_top, 5);

@@ -28,7 +28,7 @@ PlainSlipStep::PlainSlipStep(const LayerModel& m, double u_x_top)
     : m_(m),
       u_x_top_(u_x_top),
       hht_(m.config.time.hht_alpha, m.d.dt),
-      system_{m.K, m.K_ff(), m.M_ff(), m.M_ff_rows(), m.K_fd, m.n_free, m.n_top, m.n_contact_dofs},
+      system_(m.partitioned()),
       stepper_(system_, hht_, m.config.time.contact_weighting == ContactWeighting::alpha,
                m.factorize_split(effective_matrix(hht_, system_))),
       W_(stepper_.contact_weight() * delassus_operator_periodic(stepper_.K_eff(), m.n_contact_dofs / 2)),

@@ -69,9 +69,8 @@ class StickPhase {
   std::int64_t step_ = 0;
   EnergySums sums_;
   Eigen::VectorXd r_, r_trial_, u_contact_, u_contact_held_, du_contact_;
-  bool contact_held_ = false;
-  Eigen::Vector2d F_top_ = Eigen::Vector2d::Zero();  ///< the ledger's top force at the current step  ///< the first
-                                                     ///< step has moved the contact rows to their held values
+  bool contact_held_ = false;                        ///< the first step has moved the contact rows to their held values
+  Eigen::Vector2d F_top_ = Eigen::Vector2d::Zero();  ///< the ledger's top force at the current step
 };
 
 }  // namespace slidewave
