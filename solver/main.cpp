@@ -36,15 +36,10 @@
 #include "model/memory_estimate.hpp"
 #include "model/simulation.hpp"
 
-// Thread counts of the BLAS and OpenMP under CHOLMOD, set when those libraries are linked (weak symbols:
-// absent libraries are fine). One thread by default: a study runs one process per core, and fixed
-// thread counts keep the results bit-identical from run to run.
-extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+// The thread count of OpenMP (the spectral solves' team), set when it is linked (a weak symbol: absent is fine).
+// One thread by default: a study runs one process per core. (CHOLMOD's BLAS gets its count where CHOLMOD is
+// loaded, linalg/cholmod_library.hpp.)
 extern "C" void omp_set_num_threads(int) __attribute__((weak));
-// OpenBLAS starts its worker threads when it is loaded (one per core), before main; idle, each spins on
-// sched_yield for ~0.1 s of CPU. With one thread they are stopped at once (OpenBLAS restarts them if
-// a later call asks for more).
-extern "C" int blas_thread_shutdown_() __attribute__((weak));
 
 namespace {
 
@@ -150,8 +145,6 @@ int main(int argc, char** argv) {
   }
 
   // 6. Build the model and run the three stages.
-  if (openblas_set_num_threads) openblas_set_num_threads(config.numerics.threads);
-  if (config.numerics.threads == 1 && blas_thread_shutdown_) blas_thread_shutdown_();
   if (omp_set_num_threads) omp_set_num_threads(config.numerics.threads);
   const std::atomic<bool>* stop = install_stop_handlers(kInterrupted, lock_path_for(output_path));
   std::unique_ptr<RunSession> session;

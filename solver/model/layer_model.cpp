@@ -106,7 +106,7 @@ std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<do
 std::unique_ptr<SplitSolver> LayerModel::factorize_split(const Eigen::SparseMatrix<double>& A) const {
   if (config.numerics.linear_solver == LinearSolverKind::spectral)
     return std::make_unique<BlockCirculantSolver>(A, mesh.n_x, mesh.n_y, config.numerics.threads);
-  return std::make_unique<TwoSolveSplit>(std::make_unique<SparseCholesky>(A), n_contact_dofs);
+  return std::make_unique<TwoSolveSplit>(std::make_unique<SparseCholesky>(A, config.numerics.threads), n_contact_dofs);
 }
 
 Eigen::VectorXd LayerModel::top_displacement(double u_x, double u_y) const {
