@@ -1,8 +1,11 @@
 // Exact local Signorini–Coulomb solve of one node (contact/coulomb_local) on hand-built cases whose
-// answers are written out below, then on random cases against the direct conditions and brute force.
+// answers are written out below, then on random cases against the direct conditions and brute force; the node's
+// 2 x 2 solve against Eigen's LDLT bit for bit.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <cstring>
 #include <random>
 
 #include "contact/coulomb_local.hpp"
@@ -122,6 +125,42 @@ TEST(CoulombLocal, RandomCasesAgainstConditionsAndEnumeration) {
       }
   ::testing::Test::RecordProperty("cases_with_several_solutions", n_multiple);
   EXPECT_EQ(n_cases, 4000);
+}
+
+bool same_bits(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 2) == 0;
+}
+
+TEST(CoulombLocal, TheNodesSolveIsEigensLdltBitForBit) {
+  // Random SPD blocks over twelve decades, with either diagonal entry the larger (both pivot orders), nearly
+  // singular ones, the diagonal and the exactly singular block (its zero pivot gives 0, as Eigen's pseudo-inverse).
+  std::mt19937_64 generator(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Eigen::Matrix2d> blocks = {diagonal_D(), coupled_D(), (Eigen::Matrix2d() << 1, 1, 1, 1).finished(),
+                                         (Eigen::Matrix2d() << 0.5, 0, 0, 3).finished()};
+  for (int k = 0; k < 20000; ++k) {
+    const double scale = std::pow(10.0, 12 * unit(generator));
+    const double a = std::exp(3 * unit(generator)), c = std::exp(3 * unit(generator));
+    const double coupling = (k % 10 == 0 ? 1 - 1e-12 : std::fabs(unit(generator))) * std::sqrt(a * c);
+    blocks.push_back(scale *
+                     (Eigen::Matrix2d() << a, coupling * (k % 2 ? 1 : -1), coupling * (k % 2 ? 1 : -1), c).finished());
+  }
+  int n_swapped = 0, n_checked = 0;
+  for (const Eigen::Matrix2d& D : blocks) {
+    const LocalOperator node(D);
+    const Eigen::LDLT<Eigen::Matrix2d> ldlt(D);
+    n_swapped += ldlt.transpositionsP().indices()(0) == 1;
+    for (int j = 0; j < 5; ++j) {
+      const Eigen::Vector2d b(unit(generator) * std::pow(10.0, 6 * unit(generator)), unit(generator));
+      const Eigen::Vector2d expected = ldlt.solve(b);
+      ASSERT_TRUE(same_bits(node.solve(b), expected))
+          << "D = [" << D.row(0) << "; " << D.row(1) << "], b = " << b.transpose() << ": " << node.solve(b).transpose()
+          << " vs " << expected.transpose();
+      ++n_checked;
+    }
+  }
+  EXPECT_GT(n_swapped, 5000) << "both pivot orders are checked";
+  EXPECT_EQ(n_checked, 5 * static_cast<int>(blocks.size()));
 }
 
 }  // namespace
