@@ -4,6 +4,7 @@
 // of the solutions. A timed program (not a test); measure on one core:
 //     OPENBLAS_NUM_THREADS=1 taskset -c 0 slidewave_bench_circulant
 //     slidewave_bench_circulant --n 32 64 --lambda 2 --min-time 0.5
+#include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -59,8 +59,8 @@ double one_solve_seconds(const slidewave::LayerModel& model) {
 /// Average wall time of the product K u (all DOFs) that the correction does once per step: the matrix-free
 /// stencil product the stepper uses on the periodic layer (fem/stencil_product.hpp).
 double stiffness_product_seconds(const slidewave::LayerModel& model) {
-  const slidewave::StencilProduct stencil(model.K, model.mesh.n_x);
-  Eigen::VectorXd u = Eigen::VectorXd::Ones(model.K.cols()), Ku(model.K.rows());
+  const slidewave::StencilProduct stencil(model.K(), model.mesh.n_x);
+  Eigen::VectorXd u = Eigen::VectorXd::Ones(model.K().cols()), Ku(model.K().rows());
   const int repeats = 200;
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < repeats; ++i) {

@@ -11,7 +11,7 @@ namespace {
 
 /// One neighbour node q of a row node: the 2 x 2 block (d, d') of entries (2p + d, 2q + d'), and which
 /// of them received a nonzero contribution.
-struct NeighbourBlock {
+struct NodeBlock {
   int node;
   std::array<std::array<double, 2>, 2> value{};
   std::array<std::array<bool, 2>, 2> present{};
@@ -19,8 +19,8 @@ struct NeighbourBlock {
 
 /// The nonzero 2 x 2 blocks of node p's two rows, by ascending neighbour node: the elements around p in
 /// ascending element order, each adding Ke(2a + d, 2b + d') (a: p's corner, b: q's corner).
-void row_blocks(const LayerMesh& mesh, const Matrix8& Ke, int p, std::vector<NeighbourBlock>& blocks) {
-  blocks.clear();
+std::vector<NodeBlock> row_blocks(const LayerMesh& mesh, const Matrix8& Ke, int p) {
+  std::vector<NodeBlock> blocks;
   const int pi = p % mesh.n_x, pj = p / mesh.n_x;
   std::array<int, 4> elements{};
   int n_elements = 0;
@@ -37,8 +37,8 @@ void row_blocks(const LayerMesh& mesh, const Matrix8& Ke, int p, std::vector<Nei
     const std::array<int, 4> nodes = mesh.element_nodes(elements[k]);
     const int a = static_cast<int>(std::find(nodes.begin(), nodes.end(), p) - nodes.begin());
     for (int b = 0; b < 4; ++b) {
-      auto it = std::find_if(blocks.begin(), blocks.end(), [&](const NeighbourBlock& s) { return s.node == nodes[b]; });
-      if (it == blocks.end()) it = blocks.insert(blocks.end(), NeighbourBlock{nodes[b]});
+      auto it = std::find_if(blocks.begin(), blocks.end(), [&](const NodeBlock& s) { return s.node == nodes[b]; });
+      if (it == blocks.end()) it = blocks.insert(blocks.end(), NodeBlock{nodes[b]});
       for (int d = 0; d < 2; ++d)
         for (int e = 0; e < 2; ++e) {
           const double v = Ke(2 * a + d, 2 * b + e);
@@ -48,54 +48,60 @@ void row_blocks(const LayerMesh& mesh, const Matrix8& Ke, int p, std::vector<Nei
         }
     }
   }
-  std::sort(blocks.begin(), blocks.end(),
-            [](const NeighbourBlock& x, const NeighbourBlock& y) { return x.node < y.node; });
+  std::sort(blocks.begin(), blocks.end(), [](const NodeBlock& x, const NodeBlock& y) { return x.node < y.node; });
+  return blocks;
 }
 
-/// The block in the storage of Matrix: each outer vector (a row of a row-major block, a column of a
-/// column-major one) is a row of the matrix that assembles Ke_outer (Ke for rows, Ke^T for columns: the
-/// same sums in the same element order), its outer DOFs in `outer`, its inner DOFs in `inner`.
-template <typename Matrix>
-Matrix assemble_outer_vectors(const LayerMesh& mesh, const Matrix8& Ke_outer, DofRange outer, DofRange inner) {
-  // Nodes of one class (first, inner or last column; bottom, inner or top row) have the same elements
-  // around them in the same order, so the same row blocks up to a shift of the neighbour ids: each class's
-  // blocks are computed once, at its first node, as offsets from it.
-  const auto class_of = [&](int p) {
-    const int i = p % mesh.n_x, j = p / mesh.n_x;
-    return 3 * (i == 0 ? 0 : (i == mesh.n_x - 1 ? 2 : 1)) + (j == 0 ? 0 : (j == mesh.n_y ? 2 : 1));
-  };
-  std::array<std::vector<NeighbourBlock>, 9> class_blocks;  // neighbour node stored as offset from p
+}  // namespace
+
+UniformRows::UniformRows(const LayerMesh& mesh, const Matrix8& Ke) : n_x_(mesh.n_x), n_y_(mesh.n_y) {
+  // Each class's blocks at its first node, as offsets from it.
   std::array<bool, 9> known{};
-  Matrix A(Matrix::IsRowMajor ? outer.size() : inner.size(), Matrix::IsRowMajor ? inner.size() : outer.size());
-  A.reserve(static_cast<Eigen::Index>(outer.size()) * 18);  // nine nodes, two DOFs each
-  for (int dof = outer.begin; dof < outer.end; ++dof) {
-    const int p = dof / 2, d = dof % 2, c = class_of(p);
-    if (!known[c]) {
-      row_blocks(mesh, Ke_outer, p, class_blocks[c]);
-      for (NeighbourBlock& s : class_blocks[c]) s.node -= p;
-      known[c] = true;
-    }
-    A.startVec(dof - outer.begin);
-    for (const NeighbourBlock& s : class_blocks[c])
-      for (int e = 0; e < 2; ++e) {
-        const int other = 2 * (p + s.node) + e;
-        if (s.present[d][e] && other >= inner.begin && other < inner.end)
-          A.insertBackByOuterInner(dof - outer.begin, other - inner.begin) = s.value[d][e];
-      }
+  for (int p = 0; p < mesh.n_x * (mesh.n_y + 1); ++p) {
+    const int c = node_class(p);
+    if (known[c]) continue;
+    for (const NodeBlock& b : row_blocks(mesh, Ke, p)) class_blocks_[c].push_back({b.node - p, b.value, b.present});
+    known[c] = true;
+  }
+}
+
+Eigen::VectorXd UniformRows::product(DofRange rows, DofRange cols, const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  if (x.size() != cols.size()) throw std::invalid_argument("UniformRows::product: x does not fit the columns");
+  Eigen::VectorXd y(rows.size());
+  for (int row = rows.begin; row < rows.end; ++row) {
+    double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, then y(i) = 0 + 1 tmp
+    for_each_entry(row, cols, [&](int column, double value) { sum += value * x(column - cols.begin); });
+    y(row - rows.begin) = sum;  // 0 + 1 tmp is tmp: a sum from +0 is never -0
+  }
+  return y;
+}
+
+RowSparseMatrix UniformRows::rows(DofRange rows, DofRange cols, const std::vector<int>& node_columns) const {
+  RowSparseMatrix A(rows.size(), cols.size());
+  A.reserve(static_cast<Eigen::Index>(node_columns.empty() ? rows.size() : 2 * node_columns.size() * (n_y_ + 1)) *
+            18);  // nine nodes, two DOFs each
+  for (int dof = rows.begin; dof < rows.end; ++dof) {
+    A.startVec(dof - rows.begin);
+    const int i = (dof / 2) % n_x_;
+    if (!node_columns.empty() && std::find(node_columns.begin(), node_columns.end(), i) == node_columns.end()) continue;
+    for_each_entry(dof, cols, [&](int column, double value) {
+      A.insertBackByOuterInner(dof - rows.begin, column - cols.begin) = value;
+    });
   }
   A.finalize();
   return A;
 }
 
-}  // namespace
-
 RowSparseMatrix assemble_uniform_rows(const LayerMesh& mesh, const Matrix8& Ke, DofRange rows, DofRange cols) {
-  return assemble_outer_vectors<RowSparseMatrix>(mesh, Ke, rows, cols);
+  return UniformRows(mesh, Ke).rows(rows, cols);
 }
 
 SparseMatrix assemble_uniform_columns(const LayerMesh& mesh, const Matrix8& Ke, DofRange rows, DofRange cols) {
-  // Column j of the block is row j of the transposed block, which assembles Ke^T.
-  return assemble_outer_vectors<SparseMatrix>(mesh, Ke.transpose(), cols, rows);
+  // Column j of the block is row j of the transposed block, which assembles Ke^T: the row-major storage of
+  // that block is the column-major storage of this one.
+  const RowSparseMatrix transposed = UniformRows(mesh, Ke.transpose()).rows(cols, rows);
+  return Eigen::Map<const SparseMatrix>(transposed.cols(), transposed.rows(), transposed.nonZeros(),
+                                        transposed.outerIndexPtr(), transposed.innerIndexPtr(), transposed.valuePtr());
 }
 
 SparseMatrix assemble_uniform(const LayerMesh& mesh, const Matrix8& Ke) {

@@ -6,6 +6,8 @@
 // skipped and an entry with none left out: the numbers, bit for bit, of Eigen's setFromTriplets over the
 // elements in order (tested against it), at a fraction of the time and memory of a layer's setup.
 #include <Eigen/Sparse>
+#include <array>
+#include <vector>
 
 #include "fem/quad4.hpp"
 #include "mesh/layer_mesh.hpp"
@@ -20,6 +22,51 @@ using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 struct DofRange {
   int begin, end;
   int size() const { return end - begin; }
+};
+
+/// The rows of the matrix that assembles one element matrix over every element of the uniform mesh, known
+/// without storing them: nodes of one class (first, inner or last mesh column; bottom, inner or top mesh row)
+/// have the same elements around them in the same order, so the same row blocks up to a shift of the
+/// neighbours, computed once per class. The assembly below stores its rows from here; the product reads the
+/// same entries in the same order, so it gives the bits of the assembled matrix's product without the matrix.
+class UniformRows {
+ public:
+  UniformRows(const LayerMesh& mesh, const Matrix8& element_matrix);
+
+  /// f(column, value) for the stored entries of row `dof` whose column is in `cols`, in ascending column order.
+  template <typename F>
+  void for_each_entry(int dof, DofRange cols, F&& f) const {
+    const int p = dof / 2, d = dof % 2;
+    for (const NeighbourBlock& s : class_blocks_[node_class(p)])
+      for (int e = 0; e < 2; ++e) {
+        const int column = 2 * (p + s.offset) + e;
+        if (s.present[d][e] && column >= cols.begin && column < cols.end) f(column, s.value[d][e]);
+      }
+  }
+
+  /// y = A(rows, cols) x (x of size cols.size()): Eigen's product of the block as a row-major matrix of its own
+  /// (per row a sum from 0 over its entries in column order, added to a zero), so the same bits.
+  Eigen::VectorXd product(DofRange rows, DofRange cols, const Eigen::Ref<const Eigen::VectorXd>& x) const;
+
+  /// The block (rows x cols), indices relative to it; with `node_columns`, only the rows of the nodes in those
+  /// mesh columns are stored (the others empty).
+  RowSparseMatrix rows(DofRange rows, DofRange cols, const std::vector<int>& node_columns = {}) const;
+
+ private:
+  /// One neighbour node of a row node (at `offset` from it): the 2 x 2 block (d, d') of entries (2p + d, 2q + d'),
+  /// and which of them received a nonzero contribution.
+  struct NeighbourBlock {
+    int offset;
+    std::array<std::array<double, 2>, 2> value{};
+    std::array<std::array<bool, 2>, 2> present{};
+  };
+  int node_class(int p) const {
+    const int i = p % n_x_, j = p / n_x_;
+    return 3 * (i == 0 ? 0 : (i == n_x_ - 1 ? 2 : 1)) + (j == 0 ? 0 : (j == n_y_ ? 2 : 1));
+  }
+
+  int n_x_, n_y_;
+  std::array<std::vector<NeighbourBlock>, 9> class_blocks_;
 };
 
 /// The block (rows x cols) of the matrix that assembles element_matrix over every element, indices

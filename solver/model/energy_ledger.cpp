@@ -6,9 +6,8 @@ EnergyLedger::EnergyLedger(const LayerModel& m, const Eigen::VectorXd& v_top)
     : model_(m),
       hht_(m.config.time.hht_alpha, m.d.dt),
       weight_previous_(m.config.time.contact_weighting == ContactWeighting::alpha ? m.config.time.hht_alpha : 0.0) {
-  const int n_t = m.n_top;
   M_fd_v_top_ = m.M_fd * v_top;
-  kinetic_top_ = v_top.dot(m.M.bottomRightCorner(n_t, n_t) * v_top);
+  kinetic_top_ = v_top.dot(m.top_mass_product(v_top));
 }
 
 double EnergyLedger::kinetic(const HHTState& s) const {

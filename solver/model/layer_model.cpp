@@ -17,8 +17,9 @@
 
 namespace slidewave {
 
-struct LayerModel::FreeFreeBlocks {
-  std::once_flag assembled;
+struct LayerModel::AssembledBlocks {
+  std::once_flag all_dofs, free_free;
+  RowSparseMatrix K, M;
   Eigen::SparseMatrix<double> K_ff, M_ff;
   RowSparseMatrix M_ff_rows;
 };
@@ -27,24 +28,27 @@ LayerModel::LayerModel(const RunConfig& c) : config(c), d(c.derived()), mesh(d.n
   n_free = mesh.n_free();
   n_top = mesh.n_top();
   n_contact_dofs = 2 * mesh.n_contact();
-  const Matrix8 Ke = quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration);
-  const Matrix8 Me = quad4_mass(c.material.rho, d.h, c.mesh.mass);
+  stiffness_rows_ =
+      std::make_shared<const UniformRows>(mesh, quad4_stiffness(c.material.E, c.material.nu, d.h, c.mesh.integration));
+  mass_rows_ = std::make_shared<const UniformRows>(mesh, quad4_mass(c.material.rho, d.h, c.mesh.mass));
   const DofRange all{0, mesh.n_dofs()}, free{0, n_free}, top{n_free, mesh.n_dofs()};
-  // Swapped in: Eigen's SparseMatrix has no move assignment, and `K = assemble...(...)` would copy each
+  // Swapped in: Eigen's SparseMatrix has no move assignment, and `K_fd = ...rows(...)` would copy each
   // matrix into fresh memory.
-  assemble_uniform_rows(mesh, Ke, all, all).swap(K);
-  assemble_uniform_rows(mesh, Me, all, all).swap(M);
-  assemble_uniform_rows(mesh, Ke, free, top).swap(K_fd);
-  assemble_uniform_rows(mesh, Me, free, top).swap(M_fd);
-  assemble_uniform_rows(mesh, Me, top, all).swap(M_top_rows);
+  stiffness_rows_->rows(free, top).swap(K_fd);
+  mass_rows_->rows(free, top).swap(M_fd);
+  mass_rows_->rows(top, all).swap(M_top_rows);
+  // Mesh columns 0, 1 and n_x - 1 hold every distinct row (first, inner and last column).
+  const std::vector<int> distinct_columns = {0, 1, mesh.n_x - 1};
+  stiffness_rows_->rows(all, all, distinct_columns).swap(K_spectral_rows_);
   if (c.mesh.mass == MassKind::redistributed) {
     const double rho = c.material.rho;
-    redistribute_contact_mass(mesh, rho, M, all, all);
     redistribute_contact_mass(mesh, rho, M_fd, free, top);
     redistribute_contact_mass(mesh, rho, M_top_rows, top, all);
+  } else {
+    mass_rows_->rows(all, all, distinct_columns).swap(M_spectral_rows_);
   }
   if (c.substrate.present()) substrate = std::make_shared<const LayerModel>(substrate_body_config(c));
-  free_free_ = std::make_shared<FreeFreeBlocks>();
+  assembled_ = std::make_shared<AssembledBlocks>();
 }
 
 namespace {
@@ -67,36 +71,70 @@ void assemble_free_free(const LayerModel& m, Eigen::SparseMatrix<double>& K_ff, 
 
 }  // namespace
 
+const RowSparseMatrix& LayerModel::K() const {
+  AssembledBlocks& a = *assembled_;
+  std::call_once(a.all_dofs, [this, &a] {
+    const DofRange all{0, mesh.n_dofs()};
+    stiffness_rows_->rows(all, all).swap(a.K);
+    mass_rows_->rows(all, all).swap(a.M);
+    if (config.mesh.mass == MassKind::redistributed)
+      redistribute_contact_mass(mesh, config.material.rho, a.M, all, all);
+  });
+  return a.K;
+}
+
+const RowSparseMatrix& LayerModel::M() const {
+  K();
+  return assembled_->M;
+}
+
+Eigen::VectorXd LayerModel::stiffness_product(const Eigen::Ref<const Eigen::VectorXd>& u) const {
+  const DofRange all{0, mesh.n_dofs()};
+  return stiffness_rows_->product(all, all, u);
+}
+
+Eigen::VectorXd LayerModel::top_mass_product(const Eigen::Ref<const Eigen::VectorXd>& v_t) const {
+  if (config.mesh.mass == MassKind::redistributed) return M().bottomRightCorner(n_top, n_top) * v_t;
+  const DofRange top{n_free, n_free + n_top};
+  return mass_rows_->product(top, top, v_t);
+}
+
+const RowSparseMatrix& LayerModel::spectral_rows(FreeBlock which) const {
+  if (which == FreeBlock::stiffness) return K_spectral_rows_;
+  return config.mesh.mass == MassKind::redistributed ? M() : M_spectral_rows_;
+}
+
 const Eigen::SparseMatrix<double>& LayerModel::K_ff() const {
-  FreeFreeBlocks& f = *free_free_;
-  std::call_once(f.assembled, [this, &f] { assemble_free_free(*this, f.K_ff, f.M_ff, f.M_ff_rows); });
-  return f.K_ff;
+  AssembledBlocks& a = *assembled_;
+  std::call_once(a.free_free, [this, &a] { assemble_free_free(*this, a.K_ff, a.M_ff, a.M_ff_rows); });
+  return a.K_ff;
 }
 
 const Eigen::SparseMatrix<double>& LayerModel::M_ff() const {
   K_ff();
-  return free_free_->M_ff;
+  return assembled_->M_ff;
 }
 
 const RowSparseMatrix& LayerModel::M_ff_rows() const {
   K_ff();
-  return free_free_->M_ff_rows;
+  return assembled_->M_ff_rows;
 }
 
 PartitionedSystem LayerModel::partitioned() const {
-  return {K, K_ff(), M_ff(), M_ff_rows(), K_fd, n_free, n_top, n_contact_dofs};
+  return {K(), K_ff(), M_ff(), M_ff_rows(), K_fd, n_free, n_top, n_contact_dofs};
 }
 
 Eigen::VectorXd LayerModel::free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const {
-  return leading_block_product(M, n_free, x_f);
+  if (config.mesh.mass == MassKind::redistributed) return leading_block_product(M(), n_free, x_f);
+  const DofRange free{0, n_free};
+  return mass_rows_->product(free, free, x_f);
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(FreeBlock which) const {
   if (config.numerics.linear_solver != LinearSolverKind::spectral)
     return factorize(which == FreeBlock::stiffness ? K_ff() : M_ff());
-  return std::make_unique<BlockCirculantSolver>(
-      circulant_blocks_of_rows(which == FreeBlock::stiffness ? K : M, mesh.n_x, mesh.n_y), mesh.n_x, mesh.n_y,
-      config.numerics.threads);
+  return std::make_unique<BlockCirculantSolver>(circulant_blocks_of_rows(spectral_rows(which), mesh.n_x, mesh.n_y),
+                                                mesh.n_x, mesh.n_y, config.numerics.threads);
 }
 
 std::unique_ptr<LinearSolver> LayerModel::factorize(const Eigen::SparseMatrix<double>& A) const {

@@ -22,7 +22,6 @@ struct LayerModel {
   RunConfig config;
   DerivedConstants d;
   LayerMesh mesh;
-  RowSparseMatrix K, M;  ///< all DOFs
   RowSparseMatrix K_fd, M_fd, M_top_rows;
   int n_free, n_top, n_contact_dofs;
   /// The deformable substrate as a layer in its mirrored frame (model/substrate.hpp); null: the rigid flat.
@@ -31,6 +30,23 @@ struct LayerModel {
   /// stick_phase_run.hpp, slip_phase_run.hpp); false: every step plainly. Not a configuration key: both give
   /// the same solution to round-off, and the tests use plain stepping as the phases' oracle.
   bool steps_in_wavenumbers = true;
+
+  enum class FreeBlock { stiffness, mass };
+
+  /// K and M on all DOFs, assembled on first use: the default path multiplies by their rows without storing them
+  /// (stiffness_product, free_mass_product, top_mass_product) and reads its spectral blocks off a few of them
+  /// (spectral_rows).
+  const RowSparseMatrix& K() const;
+  const RowSparseMatrix& M() const;
+  /// K u on all DOFs: the bits of K() * u.
+  Eigen::VectorXd stiffness_product(const Eigen::Ref<const Eigen::VectorXd>& u) const;
+  /// M_tt v_t, the top-top block of M times the top's values: the bits of M().bottomRightCorner(n_top, n_top) v_t.
+  Eigen::VectorXd top_mass_product(const Eigen::Ref<const Eigen::VectorXd>& v_t) const;
+  /// The rows of K or M that the spectral blocks are read from (linalg/block_circulant_solver.hpp,
+  /// circulant_blocks_of_rows; model/stick_phase/wavenumber_blocks.hpp): on all DOFs, the rows of the nodes in
+  /// mesh columns 0, 1 and n_x - 1 stored (every distinct row), the others empty; M() itself with the
+  /// redistributed mass (which changes rows after the assembly).
+  const RowSparseMatrix& spectral_rows(FreeBlock which) const;
 
   /// The free-free blocks in column-major storage (what CHOLMOD factorizes, and the plain step's K_eff), assembled
   /// on first use: a run on the default path never uses them (factorize(FreeBlock) reads K's and M's rows, and
@@ -41,11 +57,10 @@ struct LayerModel {
   const RowSparseMatrix& M_ff_rows() const;
   /// The blocks the plain HHT step works on (time/hht_stepper.hpp; assembles the free-free ones).
   PartitionedSystem partitioned() const;
-  /// M_ff x_f, from M's rows (fem/assembly.hpp, leading_block_product): the bits of M_ff_rows() x_f.
+  /// M_ff x_f, from M's rows: the bits of M_ff_rows() x_f.
   Eigen::VectorXd free_mass_product(const Eigen::Ref<const Eigen::VectorXd>& x_f) const;
 
-  enum class FreeBlock { stiffness, mass };
-  /// K_ff or M_ff factorized with the configured linear solver; `spectral` from the blocks of K's or M's rows
+  /// K_ff or M_ff factorized with the configured linear solver; `spectral` from the blocks of spectral_rows(which)
   /// (linalg/block_circulant_solver.hpp, circulant_blocks_of_rows), the same factors as from K_ff or M_ff.
   std::unique_ptr<LinearSolver> factorize(FreeBlock which) const;
   /// Factorizes a free-free matrix (K_eff, K_ff, M_ff) with the configured linear solver.
@@ -57,8 +72,11 @@ struct LayerModel {
   Eigen::VectorXd top_displacement(double u_x, double u_y) const;
 
  private:
-  struct FreeFreeBlocks;  ///< K_ff, M_ff, M_ff_rows once assembled (shared by copies: they never change)
-  std::shared_ptr<FreeFreeBlocks> free_free_;
+  /// The rows of K and M as stencils (the redistributed mass: M's rows before the redistribution).
+  std::shared_ptr<const UniformRows> stiffness_rows_, mass_rows_;
+  RowSparseMatrix K_spectral_rows_, M_spectral_rows_;  ///< spectral_rows(); M's empty with the redistributed mass
+  struct AssembledBlocks;  ///< K, M, K_ff, M_ff, M_ff_rows once assembled (shared by copies: they never change)
+  std::shared_ptr<AssembledBlocks> assembled_;
 };
 
 /// Result of the quasi-static stages (1: compression, 2: shear until T/N = preshear_ratio * f).

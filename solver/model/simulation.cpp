@@ -163,7 +163,7 @@ void add_seed(const LayerModel& m, const PreloadState& pre, const EnergyLedger& 
   }
   HHTState& s = loop.dynamics;
   const double elastic_before = ledger.elastic(s);
-  const Eigen::VectorXd K_du = m.K * du;
+  const Eigen::VectorXd K_du = m.stiffness_product(du);
   s.u += du;
   s.Ku += K_du;
   s.Mu_f += m.free_mass_product(du.head(n_f));
@@ -232,7 +232,8 @@ RunRecord simulate(const LayerModel& m, const ProgressCallback& progress, const 
   LoopState loop =
       start_state(m, pre,
                   stepper ? stepper->initial_state(pre.u, start_velocity(m), pre.r, *M_ff)
-                          : hht_initial_state(m.M, m.n_free, n_c, pre.u, start_velocity(m), pre.r, m.K * pre.u, *M_ff),
+                          : hht_initial_state([&m](const auto& x_f) { return m.free_mass_product(x_f); }, m.n_free, n_c,
+                                              pre.u, start_velocity(m), pre.r, m.stiffness_product(pre.u), *M_ff),
                   *friction, ledger);
   add_seed(m, pre, ledger, *M_ff, loop);
   Recorder recorder(m, ledger, pre);

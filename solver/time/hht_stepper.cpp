@@ -56,10 +56,13 @@ HHTState HHTStepper::initial_state(const Eigen::VectorXd& u, const Eigen::Vector
                                    const LinearSolver& M_ff) const {
   Eigen::VectorXd Ku(u.size());
   multiply_K(u, Ku);
-  return hht_initial_state(system_.M_ff_rows, system_.n_free, system_.n_contact, u, v, r, std::move(Ku), M_ff);
+  const auto free_mass_product = [this](const Eigen::Ref<const Eigen::VectorXd>& x_f) {
+    return leading_block_product(system_.M_ff_rows, system_.n_free, x_f);
+  };
+  return hht_initial_state(free_mass_product, system_.n_free, system_.n_contact, u, v, r, std::move(Ku), M_ff);
 }
 
-HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M, int n_free, int n_contact,
+HHTState hht_initial_state(const FreeMassProduct& free_mass_product, int n_free, int n_contact,
                            const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
                            Eigen::VectorXd Ku, const LinearSolver& M_ff) {
   const int n_f = n_free, n_c = n_contact;
@@ -72,8 +75,8 @@ HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M
   rhs.head(n_c) += r;
   s.acc = Eigen::VectorXd::Zero(u.size());
   s.acc.head(n_f) = M_ff.solve(rhs);
-  s.Mu_f = leading_block_product(M, n_f, u.head(n_f));
-  s.Mv_f = leading_block_product(M, n_f, v.head(n_f));
+  s.Mu_f = free_mass_product(u.head(n_f));
+  s.Mv_f = free_mass_product(v.head(n_f));
   s.Ma_f = -s.Ku.head(n_f);
   s.Ma_f.head(n_c) += r;
   return s;

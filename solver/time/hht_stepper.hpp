@@ -25,6 +25,7 @@
 // bitwise equal to the sparse product; any other K (StencilProduct refuses it) keeps the sparse product.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -59,11 +60,13 @@ Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const E
 /// The same, of the system's blocks.
 Eigen::SparseMatrix<double> effective_matrix(const HHTCoefficients& hht, const PartitionedSystem& system);
 
+/// M_ff x_f, for x_f of size n_free.
+using FreeMassProduct = std::function<Eigen::VectorXd(const Eigen::Ref<const Eigen::VectorXd>&)>;
+
 /// HHTStepper::initial_state with K u given (a run that never steps plainly has no stepper): the state in the
-/// equation of motion, the acceleration from M_ff a_f = C^T r - (K u)_f, the mass products.
-/// M: a row-major mass matrix whose leading n_free rows and columns are M_ff (M_ff itself, or M on all DOFs:
-/// the products skip the columns beyond n_free, fem/assembly.hpp leading_block_product); the contact DOFs first.
-HHTState hht_initial_state(const Eigen::SparseMatrix<double, Eigen::RowMajor>& M, int n_free, int n_contact,
+/// equation of motion, the acceleration from M_ff a_f = C^T r - (K u)_f, the mass products (by
+/// free_mass_product: the stepper's M_ff, or the layer's, model/layer_model.hpp); the contact DOFs first.
+HHTState hht_initial_state(const FreeMassProduct& free_mass_product, int n_free, int n_contact,
                            const Eigen::VectorXd& u, const Eigen::VectorXd& v, const Eigen::VectorXd& r,
                            Eigen::VectorXd Ku, const LinearSolver& M_ff);
 

@@ -1,7 +1,8 @@
 // The structured assembly (fem/assembly): every block the layer model keeps is, bit for bit, the block
 // of Eigen's setFromTriplets over the elements in order (the obvious assembly, written here as the
 // oracle), for the stiffness of each integration and both mass matrices, on meshes with the periodic seam
-// one and two elements wide of the smallest meshes.
+// one and two elements wide of the smallest meshes; the stored rows' products (UniformRows::product) and the
+// rows of a few node columns, the bits of the assembled blocks.
 #include <gtest/gtest.h>
 
 #include <Eigen/Sparse>
@@ -108,6 +109,69 @@ TEST(Assembly, LeadingBlockProductIsTheBlocksProductBitForBit) {
                                                   {0, mesh.n_dofs()}, {0, mesh.n_dofs()});
   EXPECT_THROW(leading_block_product(A, mesh.n_free(), Eigen::VectorXd::Zero(mesh.n_free() + 1)),
                std::invalid_argument);
+}
+
+TEST(Assembly, UniformRowsProductIsTheAssembledBlocksProductBitForBit) {
+  for (const LayerMesh& mesh : {LayerMesh(3, 1, 0.5), LayerMesh(4, 2, 0.5), LayerMesh(7, 5, 0.8)}) {
+    const int n = mesh.n_dofs(), n_free = mesh.n_free();
+    const DofRange all{0, n}, free{0, n_free}, top{n_free, n};
+    for (const Matrix8& Ke :
+         {quad4_stiffness(1000.0, 0.3, mesh.h, Integration::full),
+          quad4_stiffness(1000.0, 0.49, mesh.h, Integration::reduced), quad4_mass(2.5, mesh.h, MassKind::consistent),
+          quad4_mass(2.5, mesh.h, MassKind::lumped)}) {
+      const UniformRows rows(mesh, Ke);
+      const RowSparseMatrix A = assemble_uniform_rows(mesh, Ke, all, all);
+      for (const auto& [r, c] :
+           {std::pair{all, all}, std::pair{free, free}, std::pair{top, top}, std::pair{free, top}}) {
+        const RowSparseMatrix block = assemble_uniform_rows(mesh, Ke, r, c);
+        for (int seed : {1, 2}) {
+          Eigen::VectorXd x = testing::random_vector(c.size(), seed);
+          for (Eigen::Index k = 0; k < x.size(); k += 5) x(k) *= 1e-30;
+          if (seed == 2) x.setZero();
+          const Eigen::VectorXd expected = block * x, actual = rows.product(r, c, x);
+          ASSERT_EQ(actual.size(), expected.size());
+          EXPECT_EQ(std::memcmp(actual.data(), expected.data(), sizeof(double) * actual.size()), 0)
+              << "rows " << r.begin << ".." << r.end << ", columns " << c.begin << ".." << c.end << ", seed " << seed;
+        }
+      }
+      // The same as the whole matrix's product, the block by Eigen's block product (the layer's uses).
+      const Eigen::VectorXd x = testing::random_vector(n, 4);
+      const Eigen::VectorXd whole = A * x, corner = A.bottomRightCorner(n - n_free, n - n_free) * x.tail(n - n_free);
+      EXPECT_EQ(std::memcmp(rows.product(all, all, x).data(), whole.data(), sizeof(double) * n), 0);
+      EXPECT_EQ(
+          std::memcmp(rows.product(top, top, x.tail(n - n_free)).data(), corner.data(), sizeof(double) * corner.size()),
+          0);
+    }
+  }
+  const LayerMesh mesh(3, 1, 0.5);
+  EXPECT_THROW(UniformRows(mesh, quad4_mass(2.5, mesh.h, MassKind::consistent))
+                   .product({0, mesh.n_free()}, {0, mesh.n_free()}, Eigen::VectorXd::Zero(mesh.n_free() + 1)),
+               std::invalid_argument);
+}
+
+TEST(Assembly, RowsOfSomeNodeColumnsAreTheAssembledRows) {
+  const LayerMesh mesh(7, 3, 0.5);
+  const Matrix8 Ke = quad4_stiffness(1000.0, 0.3, mesh.h, Integration::full);
+  const DofRange all{0, mesh.n_dofs()};
+  const RowSparseMatrix A = assemble_uniform_rows(mesh, Ke, all, all);
+  const RowSparseMatrix some = UniformRows(mesh, Ke).rows(all, all, {0, 1, 6});
+  ASSERT_EQ(some.rows(), A.rows());
+  ASSERT_EQ(some.cols(), A.cols());
+  int n_kept = 0;
+  for (int row = 0; row < A.rows(); ++row) {
+    const int i = (row / 2) % mesh.n_x;
+    const bool kept = i == 0 || i == 1 || i == 6;
+    const Eigen::SparseVector<double> expected =
+        kept ? Eigen::SparseVector<double>(A.row(row).transpose()) : Eigen::SparseVector<double>(A.cols());
+    const Eigen::SparseVector<double> actual = some.row(row).transpose();
+    ASSERT_EQ(actual.nonZeros(), expected.nonZeros()) << "row " << row;
+    for (Eigen::Index k = 0; k < actual.nonZeros(); ++k) {
+      EXPECT_EQ(actual.innerIndexPtr()[k], expected.innerIndexPtr()[k]) << "row " << row;
+      EXPECT_EQ(actual.valuePtr()[k], expected.valuePtr()[k]) << "row " << row;
+    }
+    n_kept += kept;
+  }
+  EXPECT_EQ(n_kept, 2 * 3 * (mesh.n_y + 1));
 }
 
 }  // namespace

@@ -107,7 +107,7 @@ TEST(BlockCirculantSolver, BlocksReadOffTheRowsOnAllDofsFactorizeToTheSameBits) 
                                          std::pair{LayerModel::FreeBlock::mass, &m.M_ff()}}) {
             const BlockCirculantSolver checked(*A, n_x, n_y);
             const BlockCirculantSolver of_rows(
-                circulant_blocks_of_rows(which == LayerModel::FreeBlock::stiffness ? m.K : m.M, n_x, n_y), n_x, n_y);
+                circulant_blocks_of_rows(which == LayerModel::FreeBlock::stiffness ? m.K() : m.M(), n_x, n_y), n_x, n_y);
             EXPECT_EQ(of_rows.bandwidth(), checked.bandwidth()) << where;
             const Eigen::VectorXd x = checked.solve(b);
             EXPECT_TRUE(same_bits(of_rows.solve(b), x)) << where;
@@ -115,8 +115,8 @@ TEST(BlockCirculantSolver, BlocksReadOffTheRowsOnAllDofsFactorizeToTheSameBits) 
           }
         }
   const Layer l = layer(5, 3, Integration::reduced, "consistent");
-  EXPECT_THROW(circulant_blocks_of_rows(l.model.K, 5, 5), std::invalid_argument);  // more rows than K has
-  EXPECT_THROW(BlockCirculantSolver(circulant_blocks_of_rows(l.model.K, 5, 3), 5, 2), std::invalid_argument);
+  EXPECT_THROW(circulant_blocks_of_rows(l.model.K(), 5, 5), std::invalid_argument);  // more rows than K has
+  EXPECT_THROW(BlockCirculantSolver(circulant_blocks_of_rows(l.model.K(), 5, 3), 5, 2), std::invalid_argument);
 }
 
 // numerics.threads: the FFT rows and the wavenumbers are shared out to the threads, and every row and

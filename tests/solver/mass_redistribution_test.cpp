@@ -24,7 +24,7 @@ LayerModel layer(const char* mass, int n, double t_end = 100.0) {
 
 TEST(MassRedistribution, KeepsTheTotalMassAndTakesTheContactNodesInertia) {
   const LayerModel consistent = layer("consistent", 4), redistributed = layer("redistributed", 4);
-  const Eigen::MatrixXd M = Eigen::MatrixXd(redistributed.M), M0 = Eigen::MatrixXd(consistent.M);
+  const Eigen::MatrixXd M = Eigen::MatrixXd(redistributed.M()), M0 = Eigen::MatrixXd(consistent.M());
   const double layer_mass = consistent.config.material.rho * consistent.d.H * consistent.d.lambda;
   Eigen::VectorXd x_dofs = Eigen::VectorXd::Zero(M.rows());  // a rigid translation along x
   for (Eigen::Index k = 0; k < M.rows(); k += 2) x_dofs(k) = 1;

@@ -85,12 +85,12 @@ TEST(Mass, GlobalMassOfTheLayer) {
   for (int d = 0; d < 2; ++d) {
     Eigen::VectorXd translation = Eigen::VectorXd::Zero(m_c.mesh.n_dofs());
     for (int node = 0; node < m_c.mesh.n_nodes(); ++node) translation(2 * node + d) = 1;
-    EXPECT_NEAR(translation.dot(m_c.M * translation), total, 1e-12 * total);
-    EXPECT_NEAR(translation.dot(m_l.M * translation), total, 1e-12 * total);
+    EXPECT_NEAR(translation.dot(m_c.M() * translation), total, 1e-12 * total);
+    EXPECT_NEAR(translation.dot(m_l.M() * translation), total, 1e-12 * total);
   }
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(m_c.mesh.n_dofs());
-  EXPECT_LE((m_c.M * ones - m_l.M * ones).norm(), 1e-12 * (m_c.M * ones).norm());
-  const Eigen::MatrixXd M_dense(m_c.M);
+  EXPECT_LE((m_c.M() * ones - m_l.M() * ones).norm(), 1e-12 * (m_c.M() * ones).norm());
+  const Eigen::MatrixXd M_dense(m_c.M());
   EXPECT_EQ((M_dense - M_dense.transpose()).norm(), 0.0);
 }
 

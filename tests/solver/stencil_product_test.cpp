@@ -180,7 +180,7 @@ TEST(StencilProduct, TheStepperUsesItOnTheLayerAndKeepsEigensBits) {
     const Eigen::VectorXd u = random_field(m.n_free + m.n_top, 5);
     const HHTState s = stepper.initial_state(u, Eigen::VectorXd::Zero(u.size()),
                                              Eigen::VectorXd::Zero(m.n_contact_dofs), SparseCholesky(m.M_ff()));
-    const Eigen::VectorXd expected = m.K * u;
+    const Eigen::VectorXd expected = m.K() * u;
     EXPECT_EQ(first_bitwise_difference(s.Ku, expected), -1) << solver;
   }
 }

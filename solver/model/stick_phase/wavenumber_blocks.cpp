@@ -81,8 +81,8 @@ WavenumberBlocks::WavenumberBlocks(const LayerModel& model)
       lanes(n_x / 2 + 1),
       K(s, kHalfBandwidth, lanes),
       M(s, kHalfBandwidth, lanes) {
-  read_blocks(model.K, model, K, K_fd0, K_dd0);
-  read_blocks(model.M, model, M, M_fd0, M_dd0);
+  read_blocks(model.spectral_rows(LayerModel::FreeBlock::stiffness), model, K, K_fd0, K_dd0);
+  read_blocks(model.spectral_rows(LayerModel::FreeBlock::mass), model, M, M_fd0, M_dd0);
   weight.assign(lanes, 2.0 / n_x);
   weight[0] = 1.0 / n_x;
   if (n_x % 2 == 0) weight[lanes - 1] = 1.0 / n_x;

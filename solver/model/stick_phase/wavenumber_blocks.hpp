@@ -19,7 +19,7 @@
 namespace slidewave {
 
 struct WavenumberBlocks {
-  /// Reads the blocks from the rows of mesh column 0 of model.K and model.M (std::invalid_argument if a
+  /// Reads the blocks from the rows of mesh column 0 of K and M (LayerModel::spectral_rows; std::invalid_argument if a
   /// row couples beyond the neighbouring columns or beyond half-bandwidth 3).
   explicit WavenumberBlocks(const LayerModel& model);
 

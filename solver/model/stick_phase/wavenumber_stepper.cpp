@@ -358,7 +358,7 @@ void rebuild_dynamics(const LayerModel& layer, const RowTransform& transform, co
   for (int k = n_f; k < n_f + n_t; k += 2) s.v(k) = layer.d.V0;
   s.acc = Eigen::VectorXd::Zero(n_f + n_t);
   transform.inverse(x.A, n_y, s.acc.data());
-  s.Ku = layer.K * s.u;
+  s.Ku = layer.stiffness_product(s.u);
   s.Mu_f = layer.free_mass_product(s.u.head(n_f));
   s.Mv_f = layer.free_mass_product(s.v.head(n_f));
   s.Ma_f = layer.free_mass_product(s.acc.head(n_f));
