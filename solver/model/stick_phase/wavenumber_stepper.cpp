@@ -122,6 +122,7 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   x.v_M_v.clear();  // not made by a step
   x.u_K_u.clear();
   track_shift_ = shift_f != nullptr;
+  rhs_ready_ = false;
   if (track_shift_) transform.forward(shift_f->data(), x.S);
   // The held contact DOFs: u_x as at the start, u_y = 0 (what the all-stick solution imposes).
   hold_ = LaneVectors(2, lanes);
@@ -143,27 +144,37 @@ void WavenumberStepper::start(const HHTState& layer, const Eigen::VectorXd* shif
   r_scale_ = layer.r.lpNorm<Eigen::Infinity>();
 }
 
+__attribute__((always_inline)) inline void WavenumberStepper::interior_rhs_row(const ModeState& x,
+                                                                               const LaneVectors& KU, int r,
+                                                                               LaneVectors& rhs_out) const {
+  const int me = n_active_, lanes = width_;
+  const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
+  for (int part = 0; part < 2; ++part) {
+    const std::size_t e = static_cast<std::size_t>(r) * lanes;
+    const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
+    const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
+    const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
+    const double* Ku = (part ? KU.im : KU.re).data() + e;
+    double* __restrict rhs = (part ? rhs_out.im : rhs_out.re).data() + e;
+    for (int m = 0; m < me; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
+    if (r < 2 + K().p) {  // the held contact DOFs load the rows within the band of them
+      const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
+      for (int m = 0; m < me; ++m) rhs[m] += load[m];
+    }
+  }
+}
+
 SLIDEWAVE_VECTOR_CLONES
 void WavenumberStepper::step(const Eigen::Vector2d& u_top_next) {
   // lanes: the row length of every array but R (whose rows hold every lane: r_lanes).
   const int s = blocks_.s, me = n_active_, n_x = blocks_.n_x, lanes = width_, r_lanes = state_.R.lanes;
   const double dt = hht_.dt, b = hht_.mass_factor(), c2 = dt * dt * (0.5 - hht_.beta), a = hht_.alpha;
   const ModeState& x = state_;
-  // The interior right-hand side b M u~ - a K u(n) + the held contact's load, M u~ = M u + dt M v + c M a.
-  for (int r = 2; r < s; ++r)
-    for (int part = 0; part < 2; ++part) {
-      const std::size_t e = static_cast<std::size_t>(r) * lanes;
-      const double* Mu = (part ? x.MU.im : x.MU.re).data() + e;
-      const double* Mv = (part ? x.MV.im : x.MV.re).data() + e;
-      const double* Ma = (part ? x.MA.im : x.MA.re).data() + e;
-      const double* Ku = (part ? x.KU.im : x.KU.re).data() + e;
-      double* __restrict rhs = (part ? U_next_.im : U_next_.re).data() + e;
-      for (int m = 0; m < me; ++m) rhs[m] = b * (Mu[m] + dt * Mv[m] + c2 * Ma[m]) - a * Ku[m];
-      if (r < 2 + K().p) {  // the held contact DOFs load the rows within the band of them
-        const double* load = (part ? hold_load_.im : hold_load_.re).data() + e;
-        for (int m = 0; m < me; ++m) rhs[m] += load[m];
-      }
-    }
+  // The interior right-hand side b M u~ - a K u(n) + the held contact's load, M u~ = M u + dt M v + c M a:
+  // made by the last advance() while each row was in cache (interior_rhs_row), else here.
+  if (!rhs_ready_)
+    for (int r = 2; r < s; ++r) interior_rhs_row(x, x.KU, r, U_next_);
+  rhs_ready_ = false;
   for (int r = 2; r < s; ++r)  // wavenumber 0: the top's share (1-a) K_fd u_d(n+1)
     add_to_lane_zero(U_next_, r, -(1 - a) * n_x * blocks_.K_fd0.row(r).dot(u_top_next));
   A_eff_interior_.solve(U_next_, me);
@@ -274,7 +285,11 @@ void WavenumberStepper::advance() {
           for (int m = 0; m < me; ++m) shift[m] -= w_previous_ * (R_next[m] - R[m]);
         }
       }
+    // The next step's right-hand side of the row, from its new mass products and K u, into u(n)'s place (not read
+    // again: K u(n+1) reads u(n+1)), which the swap below makes U_next_.
+    if (r >= 2) interior_rhs_row(x, KU_next_, r, x.U);
   }
+  rhs_ready_ = true;
   std::swap(x.U, U_next_);
   std::swap(x.KU, KU_next_);
   std::swap(x.R, R_next_);

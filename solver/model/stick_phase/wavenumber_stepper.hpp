@@ -106,6 +106,9 @@ class WavenumberStepper {
   void retire(int m);
   /// Drops the retired lanes beyond the next cache line from the step's arrays.
   void narrow_to_active();
+  /// Row r (interior) of the step's right-hand side b M u~ - a K u(n) + the held contact's load, from x's mass
+  /// products and KU, into rhs_out (the active lanes).
+  void interior_rhs_row(const ModeState& x, const LaneVectors& KU, int r, LaneVectors& rhs_out) const;
   const BandedLanes& K() const { return K_narrow_.lanes > 0 ? K_narrow_ : blocks_.K; }
   const BandedLanes& M() const { return M_narrow_.lanes > 0 ? M_narrow_ : blocks_.M; }
 
@@ -115,7 +118,8 @@ class WavenumberStepper {
   BandedLaneFactor A_eff_interior_, K_interior_;
   ModeState state_, previous_;
   /// The step's new values until advance(): u(n+1), K u(n+1) (rows 0, 1 by step(), the rest by advance()), R(n+1);
-  /// a(n+1) of the rows that M's contact rows reach, and M a(n+1) of the contact rows.
+  /// a(n+1) of the rows that M's contact rows reach, and M a(n+1) of the contact rows. After advance(), U_next_
+  /// holds the next step's interior right-hand side (rhs_ready_).
   LaneVectors U_next_, KU_next_, R_next_, A_contact_, MA_contact_;
   LaneVectors hold_, hold_load_;                  ///< hold_: U_c
   LaneVectors U_static_, KU_static_, MU_static_;  ///< the static states of all lanes (R* = rows 0, 1 of KU*)
@@ -125,6 +129,7 @@ class WavenumberStepper {
   double retired_elastic_ = 0;
   double u_scale_ = 0, r_scale_ = 0;  ///< the layer's max |u| and max |r| at the start
   bool track_shift_ = false;
+  bool rhs_ready_ = false;  ///< U_next_ holds the next step's interior right-hand side (made by advance())
   std::vector<double> transient_factor_;
 };
 
