@@ -91,7 +91,13 @@ struct RunWriter::Series {
     const std::string what = "create dataset " + name + " in";
     h5::check(H5Pset_chunk(plist, rank, chunk), file, what);
     h5::check(H5Pset_fletcher32(plist), file, what);
-    const hid_t id = H5Dcreate2(group, name.c_str(), h5::native_type<T>(), space, H5P_DEFAULT, plist, H5P_DEFAULT);
+    // Rows are appended in order, so a chunk once left is not written again: one chunk of cache is enough, where
+    // HDF5's default 1 MiB per dataset would hold ~30 finished chunks of every series until the file closes.
+    Handle access(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose);
+    h5::check(H5Pset_chunk_cache(access, H5D_CHUNK_CACHE_NSLOTS_DEFAULT,
+                                 chunk[0] * std::max<hsize_t>(1, chunk[1]) * sizeof(T), 1.0),
+              file, what);
+    const hid_t id = H5Dcreate2(group, name.c_str(), h5::native_type<T>(), space, H5P_DEFAULT, plist, access);
     h5::check(id, file, what);
     auto series = std::make_unique<Series>();
     series->set = Handle(id, H5Dclose);
