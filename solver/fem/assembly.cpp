@@ -55,12 +55,15 @@ std::vector<NodeBlock> row_blocks(const LayerMesh& mesh, const Matrix8& Ke, int 
 }  // namespace
 
 UniformRows::UniformRows(const LayerMesh& mesh, const Matrix8& Ke) : n_x_(mesh.n_x), n_y_(mesh.n_y) {
-  // Each class's blocks at its first node, as offsets from it.
+  // Each class's rows at its first node: its neighbours in ascending order, each one's two columns in order.
   std::array<bool, 9> known{};
   for (int p = 0; p < mesh.n_x * (mesh.n_y + 1); ++p) {
     const int c = node_class(p);
     if (known[c]) continue;
-    for (const NodeBlock& b : row_blocks(mesh, Ke, p)) class_blocks_[c].push_back({b.node - p, b.value, b.present});
+    for (const NodeBlock& b : row_blocks(mesh, Ke, p))
+      for (int d = 0; d < 2; ++d)
+        for (int e = 0; e < 2; ++e)
+          if (b.present[d][e]) class_rows_[2 * c + d].push_back({2 * (b.node - p) + e, b.value[d][e]});
     known[c] = true;
   }
 }
@@ -68,9 +71,15 @@ UniformRows::UniformRows(const LayerMesh& mesh, const Matrix8& Ke) : n_x_(mesh.n
 Eigen::VectorXd UniformRows::product(DofRange rows, DofRange cols, const Eigen::Ref<const Eigen::VectorXd>& x) const {
   if (x.size() != cols.size()) throw std::invalid_argument("UniformRows::product: x does not fit the columns");
   Eigen::VectorXd y(rows.size());
+  const double* x_data = x.data();
   for (int row = rows.begin; row < rows.end; ++row) {
+    const std::vector<Entry>& entries = row_entries(row);
+    const int base = row - row % 2;
     double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, then y(i) = 0 + 1 tmp
-    for_each_entry(row, cols, [&](int column, double value) { sum += value * x(column - cols.begin); });
+    if (!entries.empty() && base + entries.front().offset >= cols.begin && base + entries.back().offset < cols.end)
+      for (const Entry& e : entries) sum += e.value * x_data[base - cols.begin + e.offset];  // the row is in the block
+    else
+      for_each_entry(row, cols, [&](int column, double value) { sum += value * x_data[column - cols.begin]; });
     y(row - rows.begin) = sum;  // 0 + 1 tmp is tmp: a sum from +0 is never -0
   }
   return y;

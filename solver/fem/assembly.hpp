@@ -36,12 +36,11 @@ class UniformRows {
   /// f(column, value) for the stored entries of row `dof` whose column is in `cols`, in ascending column order.
   template <typename F>
   void for_each_entry(int dof, DofRange cols, F&& f) const {
-    const int p = dof / 2, d = dof % 2;
-    for (const NeighbourBlock& s : class_blocks_[node_class(p)])
-      for (int e = 0; e < 2; ++e) {
-        const int column = 2 * (p + s.offset) + e;
-        if (s.present[d][e] && column >= cols.begin && column < cols.end) f(column, s.value[d][e]);
-      }
+    const int base = dof - dof % 2;  // 2 p: the row's node's first DOF
+    for (const Entry& e : row_entries(dof)) {
+      const int column = base + e.offset;
+      if (column >= cols.begin && column < cols.end) f(column, e.value);
+    }
   }
 
   /// y = A(rows, cols) x (x of size cols.size()): Eigen's product of the block as a row-major matrix of its own
@@ -53,20 +52,20 @@ class UniformRows {
   RowSparseMatrix rows(DofRange rows, DofRange cols, const std::vector<int>& node_columns = {}) const;
 
  private:
-  /// One neighbour node of a row node (at `offset` from it): the 2 x 2 block (d, d') of entries (2p + d, 2q + d'),
-  /// and which of them received a nonzero contribution.
-  struct NeighbourBlock {
+  /// A stored entry of row 2 p + d: column 2 p + offset.
+  struct Entry {
     int offset;
-    std::array<std::array<double, 2>, 2> value{};
-    std::array<std::array<bool, 2>, 2> present{};
+    double value;
   };
   int node_class(int p) const {
     const int i = p % n_x_, j = p / n_x_;
     return 3 * (i == 0 ? 0 : (i == n_x_ - 1 ? 2 : 1)) + (j == 0 ? 0 : (j == n_y_ ? 2 : 1));
   }
+  /// The entries of row `dof` in ascending column order: its node's class's, component dof % 2.
+  const std::vector<Entry>& row_entries(int dof) const { return class_rows_[2 * node_class(dof / 2) + dof % 2]; }
 
   int n_x_, n_y_;
-  std::array<std::vector<NeighbourBlock>, 9> class_blocks_;
+  std::array<std::vector<Entry>, 18> class_rows_;  ///< [2 class + d]
 };
 
 /// The block (rows x cols) of the matrix that assembles element_matrix over every element, indices
