@@ -125,7 +125,7 @@ Eigen::VectorXd leading_block_product(const RowSparseMatrix& A, Eigen::Index n,
   for (Eigen::Index i = 0; i < n; ++i) {
     double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, then y(i) = 0 + 1 tmp
     for (RowSparseMatrix::InnerIterator it(A, i); it && it.index() < n; ++it) sum += it.value() * x(it.index());
-    y(i) = 0.0 + sum;  // (1 tmp is tmp; 0 + keeps Eigen's +0 for a -0 sum)
+    y(i) = sum;  // 0 + 1 tmp is tmp: a sum from +0 is never -0
   }
   return y;
 }
