@@ -27,6 +27,7 @@
 #include "git_version.hpp"
 #include "io/available_memory.hpp"
 #include "io/hdf5_support.hpp"
+#include "io/huge_page_heap.hpp"
 #include "io/output_lock.hpp"
 #include "io/output_path.hpp"
 #include "io/progress.hpp"
@@ -126,6 +127,8 @@ int main(int argc, char** argv) {
               << "); use a coarser mesh (mesh.elements_per_H) or a shorter period (geometry.lambda_over_H)\n";
     return kBadInput;
   }
+
+  back_heap_with_huge_pages(memory.total());
 
   // 5. Claim the output before any file is created or truncated: a second run into it is refused. What
   //    a killed earlier run left under its own temporary names (its run id is in the lock file) goes.
