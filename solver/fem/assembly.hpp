@@ -44,7 +44,8 @@ class UniformRows {
   }
 
   /// y = A(rows, cols) x (x of size cols.size()): Eigen's product of the block as a row-major matrix of its own
-  /// (per row a sum from 0 over its entries in column order, added to a zero), so the same bits.
+  /// (per row a sum from 0 over its entries in column order, added to a zero), so the same bits. The rows of
+  /// inner-column nodes are summed eight nodes at a time, each row its own sum (vectorized across the nodes).
   Eigen::VectorXd product(DofRange rows, DofRange cols, const Eigen::Ref<const Eigen::VectorXd>& x) const;
 
   /// The block (rows x cols), indices relative to it; with `node_columns`, only the rows of the nodes in those
