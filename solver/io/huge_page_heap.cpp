@@ -21,9 +21,9 @@ void back_heap_with_huge_pages(std::size_t reserve) {
   mallopt(M_MMAP_THRESHOLD, 512 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 1024 * 1024 * 1024);
   mallopt(M_TOP_PAD, static_cast<int>(std::min<std::size_t>(reserve, kMaxReserve)));
-  // A block larger than what the heap holds now makes it grow by the block and the pad; freed, it stays.
+  // A block larger than the heap's free top (keepcost) makes it grow by the block and the pad; freed, it stays.
   const auto old_break = reinterpret_cast<std::uintptr_t>(sbrk(0));
-  void* block = std::malloc(1024 * 1024);
+  void* block = std::malloc(mallinfo2().keepcost + 1024 * 1024);
   if (!block) return;
   const auto start = reinterpret_cast<std::uintptr_t>(block);
   const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));

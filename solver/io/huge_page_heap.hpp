@@ -9,7 +9,7 @@ namespace slidewave {
 /// otherwise first-touches ~15 MB in ~3700 page faults of 4 KiB, a noticeable part of its wall time on a
 /// virtual machine (docs/performance.md). Memory that is never touched is never backed; peak memory grows by
 /// at most the huge pages' rounding. Where the kernel has no THP, or the advice fails, nothing changes but the
-/// page size. Call first in main, once.
+/// page size. Call early in main, once.
 void back_heap_with_huge_pages(std::size_t reserve);
 
 }  // namespace slidewave
