@@ -130,13 +130,9 @@ Eigen::VectorXd UniformRows::product(DofRange rows, DofRange cols, const Eigen::
       row = 2 * (last + 1);
       continue;
     }
-    const std::vector<Entry>& entries = row_entries(row);
-    const int base = row - row % 2;
+    // The first and last mesh columns, and rows reaching out of cols: row by row.
     double sum = 0;  // Eigen's processRow: tmp = 0, tmp += a x over the row, then y(i) = 0 + 1 tmp
-    if (!entries.empty() && base + entries.front().offset >= cols.begin && base + entries.back().offset < cols.end)
-      for (const Entry& e : entries) sum += e.value * x_data[base - cols.begin + e.offset];  // the row is in the block
-    else
-      for_each_entry(row, cols, [&](int column, double value) { sum += value * x_data[column - cols.begin]; });
+    for_each_entry(row, cols, [&](int column, double value) { sum += value * x_data[column - cols.begin]; });
     y(row - rows.begin) = sum;  // 0 + 1 tmp is tmp: a sum from +0 is never -0
     ++row;
   }
