@@ -12,6 +12,10 @@ A point with a contrast `E_substrate_over_E` gets the solver group `substrate` (
 E = E_substrate_over_E E, and the layer's nu, rho and H (a substrate of another nu, rho or thickness is
 a sweep's full `solver: {substrate: {E, nu, rho, H}}` instead; both at once is an error). A point
 without one (or with None) writes no `substrate` group: the rigid flat, the config text of before.
+
+The interface is written every `output.interface_stride` steps by the rule of docs/output-sampling.md
+(study/output_sampling.py): written only where it departs from the solver's default 4 (nu = 0.49 at
+lambda = 2H), and not where the sweep's `solver.output` sets the stride itself.
 """
 
 from __future__ import annotations
@@ -21,6 +25,7 @@ import json
 import sys
 from pathlib import Path
 
+from study.output_sampling import SOLVER_DEFAULT_STRIDE, interface_stride
 from study.run_length import RunLength, run_length
 from study.sweeps import CONTRAST
 
@@ -60,6 +65,13 @@ def run_times(spec: dict) -> RunLength:
                       t_end=length.get("t_end"), substrate=substrate_of(point, model, spec.get("solver", {})))
 
 
+def study_interface_stride(point: dict, model: dict, substrate: dict | None) -> int:
+    """The point's interface output stride (study/output_sampling.py, docs/output-sampling.md)."""
+    return interface_stride(E=model["E"], nu=point["nu"], rho=point["rho"], f=point["f"], H=model["H"],
+                            lambda_over_H=point["lambda_over_H"], dt_times_cs=point["dt_times_cs"],
+                            substrate=substrate)
+
+
 def run_config(spec: dict) -> dict:
     """The solver configuration of one point (a dict ready for json.dump)."""
     point, model = spec["point"], spec["model"]
@@ -80,8 +92,12 @@ def run_config(spec: dict) -> dict:
                  "dt_times_cs": point["dt_times_cs"]},
         "perturbation": {"seed": point["seed"]},
     }
-    if snapshots:
-        config["output"] = {"snapshot_times": snapshots}
+    output = {"snapshot_times": snapshots} if snapshots else {}
+    stride = study_interface_stride(point, model, substrate)
+    if stride != SOLVER_DEFAULT_STRIDE and "interface_stride" not in spec.get("solver", {}).get("output", {}):
+        output["interface_stride"] = stride
+    if output:
+        config["output"] = output
     if point.get(CONTRAST) is not None:
         config["substrate"] = substrate
     _merge_new_keys(config, spec.get("solver", {}))
