@@ -1,5 +1,8 @@
 """The interface output stride of the study's runs (study/output_sampling.py, docs/output-sampling.md)."""
 
+import json
+import subprocess
+
 import pytest
 
 from analysis.theory import elastic
@@ -68,3 +71,15 @@ def test_a_sweep_that_sets_the_stride_keeps_its_own(study_config):
     entry = spec(study_config, "table1", name)
     config = run_config({**entry, "solver": {"output": {"interface_stride": 16}}})
     assert config["output"] == {"interface_stride": 16}
+
+
+def test_the_ceiling_is_the_solvers_own_default(study_config, tmp_path):
+    """A stride left out of config.json must mean the rule's ceiling: the solver resolves it to 4."""
+    from .conftest import solver_or_skip
+
+    (name,) = [n for n, p in sweeps.sweep_points(study_config, "table1").items() if (p["nu"], p["f"]) == (0.2, 1.5)]
+    path = tmp_path / "config.json"
+    path.write_text(json.dumps(run_config(spec(study_config, "table1", name))))
+    result = subprocess.run([str(solver_or_skip()), "check", str(path)], capture_output=True, text=True, check=True)
+    resolved = json.loads(result.stdout[result.stdout.index("{"):])
+    assert resolved["output"]["interface_stride"] == SOLVER_DEFAULT_STRIDE
