@@ -75,18 +75,18 @@ namespace {
 /// Nodes whose sums stay in registers at once (as fem/stencil_product.cpp's block).
 constexpr int kBlockNodes = 8;
 
-/// y[2 b] = sum over `entries` in order of value x[2 b + offset], b < n_nodes (<= kMax): one component's rows
-/// of consecutive nodes of one class, x and y at the first node's row; each sum from 0, in the row's own order.
-template <int kMax, typename Entry>
+/// y[2 b] = sum over `entries` in order of value x[2 b + offset], b < n_nodes (kBlockNodes when kFull, else
+/// fewer): one component's rows of consecutive nodes of one class, x and y at the first node's row; each sum
+/// from 0, in the row's own order. kFull gives the compiler a fixed trip count to vectorize.
+template <bool kFull, typename Entry>
 inline void sum_node_block(const Entry* entries, int n_entries, const double* __restrict x, double* __restrict y,
                            int n_nodes) {
-  double sum[kMax];
-  for (int b = 0; b < kMax; ++b) sum[b] = 0;
+  double sum[kBlockNodes] = {};
   for (int e = 0; e < n_entries; ++e) {
     const double value = entries[e].value;
     const double* __restrict in = x + entries[e].offset;
-    for (int b = 0; b < kMax; ++b) {
-      if (kMax != kBlockNodes && b >= n_nodes) break;
+    for (int b = 0; b < kBlockNodes; ++b) {
+      if (!kFull && b >= n_nodes) break;
       sum[b] += value * in[2 * b];
     }
   }
@@ -122,9 +122,9 @@ Eigen::VectorXd UniformRows::product(DofRange rows, DofRange cols, const Eigen::
           const double* in = x_data + (2 * q - cols.begin);
           double* out = y.data() + (2 * q + d - rows.begin);
           if (last - q + 1 >= kBlockNodes)
-            sum_node_block<kBlockNodes>(entries.data(), n, in, out, kBlockNodes);
+            sum_node_block<true>(entries.data(), n, in, out, kBlockNodes);
           else
-            sum_node_block<kBlockNodes - 1>(entries.data(), n, in, out, last - q + 1);
+            sum_node_block<false>(entries.data(), n, in, out, last - q + 1);
         }
       }
       row = 2 * (last + 1);
