@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+from analysis.fronts.sampling_limit import frame_shift_fraction
 from analysis.theory import elastic
 from analysis.theory.supersonic import supersonic_trace_speed
 
@@ -39,8 +40,9 @@ def fastest_front_speed(*, E: float, nu: float, rho: float, f: float, substrate:
 
 def interface_stride(*, E: float, nu: float, rho: float, f: float, H: float, lambda_over_H: float,
                      dt_times_cs: float, substrate: dict | None = None) -> int:
-    """Steps between two interface frames (module docstring), in [1, SOLVER_DEFAULT_STRIDE]."""
+    """Steps between two interface frames (module docstring), in [1, SOLVER_DEFAULT_STRIDE]: the frame shift of
+    the analysis's sampling limit (`frame_shift_fraction`), per step, for a front at v_max."""
     dt = elastic.time_step(elastic.shear_wave_speed(E, nu, rho), dt_times_cs)
     v_max = fastest_front_speed(E=E, nu=nu, rho=rho, f=f, substrate=substrate)
-    steps = math.floor(MAX_SHIFT_PER_FRAME * lambda_over_H * H / (v_max * dt))
-    return min(SOLVER_DEFAULT_STRIDE, max(1, steps))
+    shift_per_step = frame_shift_fraction(v_max, dt, lambda_over_H * H)
+    return min(SOLVER_DEFAULT_STRIDE, max(1, math.floor(MAX_SHIFT_PER_FRAME / shift_per_step)))

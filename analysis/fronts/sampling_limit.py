@@ -10,8 +10,10 @@ vanish as the interface lets go at once, joined into one track): it is not a mea
 any table, and is undefined with the reason `beyond_sampling_limit`.
 
 `default_rule.ALIASING_FRACTION` (0.4) flags the fits that come close to the limit; they stay
-measured (the backward supersonic fronts at nu = 0.49 sit at 0.40-0.46 of the spacing and agree with
-the paper and with Adams' theory). The case that made this rule: a run of the time-step study (nu
+measured. The study keeps its fronts far below it: it writes the interface so that a front at the
+fastest speed the theory admits moves at most a quarter of the period per frame (study/output_sampling.py,
+docs/output-sampling.md); written every 4 steps, the backward supersonic fronts at nu = 0.49 sat at
+0.39-0.46 of the spacing, and their tracks broke up. The case that made this rule: a run of the time-step study (nu
 0.45, f 1, dt c_s = 0.0625, seed 2) whose "front" moved 1.07 spacings per frame (-125 m/s, 213 c_s).
 """
 

@@ -5,6 +5,7 @@ import subprocess
 
 import pytest
 
+from analysis.fronts.sampling_limit import frame_shift_fraction
 from analysis.theory import elastic
 from analysis.theory.supersonic import supersonic_trace_speed
 from study import sweeps
@@ -18,10 +19,10 @@ PAPER = {"E": 1000.0, "rho": 1000.0, "H": 25.0, "lambda_over_H": 2.0, "dt_times_
 
 def shift_per_frame(stride, *, nu, f, E=1000.0, rho=1000.0, H=25.0, lambda_over_H=2.0, dt_times_cs=0.5,
                     substrate=None):
-    """Distance a front at v_max moves between two frames, in periods."""
+    """Distance a front at v_max moves between two frames, in periods (the analysis's frame shift)."""
     dt = dt_times_cs / elastic.shear_wave_speed(E, nu, rho)
     v_max = fastest_front_speed(E=E, nu=nu, rho=rho, f=f, substrate=substrate)
-    return stride * dt * v_max / (lambda_over_H * H)
+    return frame_shift_fraction(v_max, stride * dt, lambda_over_H * H)
 
 
 @pytest.mark.parametrize("nu", [0.0, 0.2, 0.45, 0.49])
